@@ -1,0 +1,167 @@
+// The finite element problem: a plane-strain standard-linear-solid block
+// whose top surface interacts with a rigid indenter through a traction-gap
+// law. Read it like step-18 and step-42: setup_system(), assemble(),
+// solve_newton(), commit_history(), adapt_mesh() and output each live in one
+// function of contact_problem.cc.
+#ifndef viscoslide_contact_problem_h
+#define viscoslide_contact_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <viscoslide/indenter.h>
+#include <viscoslide/interaction_law.h>
+#include <viscoslide/material.h>
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/postprocessing.h>
+
+#include <array>
+#include <memory>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  // Where the loading program stands: approach delta, indenter position s,
+  // time and the length of the step that led here (infinity: relaxed).
+  struct LoadState
+  {
+    double delta = 0.;
+    double s     = 0.;
+    double time  = 0.;
+    double dt    = std::numeric_limits<double>::infinity();
+  };
+
+  class ContactProblem
+  {
+  public:
+    static constexpr unsigned int dim = 2;
+
+    ContactProblem(const Parameters::AllParameters &parameters,
+                   MPI_Comm                         mpi_communicator);
+
+    // Approach, optional hold, optional retraction; writes all outputs.
+    void
+    run();
+
+  private:
+    // Components of the quadrature-point history: the arm stress and the
+    // energy dissipated so far per unit volume.
+    enum HistoryComponent
+    {
+      h_xx,
+      h_yy,
+      h_xy,
+      h_zz,
+      dissipated_energy,
+      n_history_components
+    };
+
+    void
+    make_grid();
+    void
+    setup_system();
+    void
+    assemble(bool with_matrix, double surface_damping);
+    void
+    solve_linear_system();
+
+    // Newton's method for the state `target` from the current iterate.
+    // Returns the iterations used, or -1 if it did not converge.
+    int
+    solve_newton(const LoadState &target, double surface_damping = 0.);
+    // Lands on the new branch after a surface instability by damped
+    // pseudo-time stepping. Returns the total Newton iterations or -1.
+    int
+    relax_to_equilibrium(const LoadState &target);
+    // Solves one step of the loading program, cutting it when Newton fails,
+    // and adapting the mesh to its solution. Returns false only if nothing
+    // worked.
+    bool
+    advance_to(const LoadState &target, const std::string &phase);
+
+    ArmStress
+    arm_stress_at(const std::vector<double> &history_values,
+                  unsigned int               q) const;
+    void
+    commit_history();
+    bool
+    adapt_mesh();
+    void
+    refine_initial_mesh();
+
+    void
+    record_step(const std::string &phase);
+    void
+    write_fields();
+    void
+    write_profile(const std::string &filename);
+
+    const Parameters::AllParameters &prm;
+    MPI_Comm                         mpi_communicator;
+    ConditionalOStream               pcout;
+    TimerOutput                      timer;
+
+    const Scales                          scales;
+    const StandardLinearSolid             material;
+    const std::unique_ptr<InteractionLaw> law;
+    const std::unique_ptr<Indenter>       indenter;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    const FESystem<dim>                        fe;
+    DoFHandler<dim>                            dof_handler;
+    const QGauss<dim>                          quadrature;
+    const QGauss<dim - 1>                      face_quadrature;
+
+    // The history lives in a discontinuous field whose nodes are the Gauss
+    // points of `quadrature`, so that SolutionTransfer carries it through
+    // refinement and coarsening and the serializer can checkpoint it.
+    const FE_DGQArbitraryNodes<dim> history_fe;
+    DoFHandler<dim>                 history_dof_handler;
+    std::vector<unsigned int>       quadrature_to_history_dof;
+
+    IndexSet                  locally_owned_dofs, locally_relevant_dofs;
+    AffineConstraints<double> constraints;
+
+    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::MPI::Vector  solution;     // ghosted, current iterate
+    TrilinosWrappers::MPI::Vector  old_solution; // ghosted, last committed
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    TrilinosWrappers::MPI::Vector  newton_update;
+    TrilinosWrappers::MPI::Vector  relaxation_anchor; // ghosted
+
+    // One vector per history component, non-ghosted (DG dofs of a cell are
+    // owned by its owner).
+    std::array<TrilinosWrappers::MPI::Vector, n_history_components> history;
+
+    LoadState committed; // state of old_solution/history
+    LoadState current;   // state `solution` is an equilibrium of
+
+    // Residual scale of the last assembly: total |surface traction| force.
+    double traction_scale;
+
+    SurfacePostprocessor postprocessor;
+    OutputWriter              writer;
+    std::unique_ptr<CsvTable> approach_table;
+
+    unsigned int step_number;
+    unsigned int last_newton_iterations;
+    unsigned int last_step_cuts;
+    bool         last_step_relaxed;
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,81 @@
+// Files of a run: the output directory, CSV tables, VTU/PVTU fields with
+// their .pvd collections, and the provenance of the run.
+#ifndef viscoslide_output_h
+#define viscoslide_output_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  // A CSV file with a header line, written by rank 0 only. Each row is
+  // flushed as it is added so that a killed run keeps every finished step.
+  class CsvTable
+  {
+  public:
+    CsvTable(const std::string &             filename,
+             const std::vector<std::string> &columns,
+             const std::string &             comment,
+             MPI_Comm                        comm);
+
+    // Numbers are written with 12 significant digits.
+    void
+    add_row(const std::vector<std::string> &values);
+
+    static std::string
+    format(double value);
+
+  private:
+    std::unique_ptr<std::ofstream> file;
+    std::size_t                    n_columns;
+  };
+
+
+  class OutputWriter
+  {
+  public:
+    OutputWriter(const std::string &directory, MPI_Comm comm);
+
+    // Creates the directory. Refuses (throws) if it already holds the
+    // results of a run and overwriting was not asked for.
+    static void
+    prepare_directory(const std::string &directory,
+                      bool               overwrite,
+                      MPI_Comm           comm);
+
+    std::string
+    path(const std::string &filename) const;
+
+    // Writes DataOut(Faces) patches as NAME-NNNNN.pvtu plus one .vtu per
+    // process and refreshes NAME.pvd.
+    template <typename DataOutType>
+    void
+    write_pvtu(const DataOutType &data_out,
+               const std::string &name,
+               unsigned int       counter,
+               double             time);
+
+  private:
+    std::string directory;
+    MPI_Comm    comm;
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+      pvd_records;
+  };
+
+
+  // The text that identifies the program version in every output.
+  std::string
+  version_string();
+} // namespace viscoslide
+
+#endif

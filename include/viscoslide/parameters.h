@@ -1,0 +1,174 @@
+// The run-time parameters of viscoslide, grouped as in step-44: one struct
+// per subsection, each able to declare its entries (with their documentation)
+// and to parse them. Every quantity a user types is dimensionless, in the
+// units of ../doc/conventions.md: lengths in eps, times in the chosen time
+// constant tau, stresses in E0* (see Scales).
+#ifndef viscoslide_parameters_h
+#define viscoslide_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  namespace Parameters
+  {
+    struct Output
+    {
+      std::string  directory;
+      unsigned int fields_every;
+      unsigned int profile_every;
+      bool         write_fields;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Material
+    {
+      double      E0_over_Einf;
+      double      poisson_ratio;
+      std::string time_constant; // "relaxation" or "retardation"
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Adhesion
+    {
+      std::string  law; // "lennard-jones" or "repulsive"
+      double       tabor_parameter;
+      double       R_over_eps;
+      double       contact_gap;
+      unsigned int face_quadrature_points;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Geometry
+    {
+      std::string substrate; // "half-plane" or "layer"
+      double      layer_thickness;
+      double      domain_width;
+      double      domain_height;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+
+      // The height of the block actually meshed.
+      double
+      height() const
+      {
+        return substrate == "layer" ? layer_thickness : domain_height;
+      }
+    };
+
+    struct Loading
+    {
+      double       initial_approach;
+      double       final_approach;
+      double       increment;
+      double       minimum_increment;
+      double       approach_speed;
+      double       hold_time;
+      unsigned int hold_steps;
+      bool         retract;
+      double       retract_to;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Mesh
+    {
+      double       finest_cell;
+      double       grading;
+      double       edge_gap_low;
+      double       edge_gap_high;
+      unsigned int max_adaptation_cycles;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Solver
+    {
+      std::string  linear_solver; // "automatic", "direct", "iterative"
+      unsigned int direct_solver_limit;
+      double       newton_tolerance;
+      unsigned int max_newton_iterations;
+      bool         line_search;
+      unsigned int max_relaxation_steps;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    // All parameters of one run. The constructor declares; parse() reads a
+    // file, checks ranges and cross-entry consistency, and throws
+    // ExcInvalidInput with the entry name and value on the first violation.
+    struct AllParameters
+    {
+      Output   output;
+      Material material;
+      Adhesion adhesion;
+      Geometry geometry;
+      Loading  loading;
+      Mesh     mesh;
+      Solver   solver;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+
+    private:
+      void
+      check_consistency() const;
+    };
+
+    DeclException1(ExcInvalidInput,
+                   std::string,
+                   << "Invalid input: " << arg1);
+  } // namespace Parameters
+
+
+  // Internal units: eps = 1, E0* = E0/(1-nu^2) = 1 and the user's time
+  // constant tau_ref = 1. Everything that turns internal numbers into the
+  // paper's dimensionless groups lives here, so that no output invents its
+  // own normalisation.
+  struct Scales
+  {
+    explicit Scales(const Parameters::AllParameters &p);
+
+    double eps;            // interaction range (= 1)
+    double R;              // indenter radius, R_hat eps
+    double E0_star;        // plane-strain relaxed modulus (= 1)
+    double Einf_star;      // plane-strain instantaneous modulus
+    double dgamma;         // work of adhesion, sqrt(muT^3/R_hat) E0* eps
+    double sigma_max;      // Lennard-Jones peak traction
+    double force;          // (pi dgamma^2 E0* R)^(1/3), the F_hat unit
+    double tau_arm;        // relaxation time of the Maxwell arm
+    double tau_ref;        // the time unit of V_hat and time_over_tau (= 1)
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,90 @@
+// Quantities of the top surface: forces, contact length, the surface
+// profile. Everything here is evaluated from the displacement field and
+// the indenter position alone, so the transient and steady-state solvers
+// share it.
+#ifndef viscoslide_postprocessing_h
+#define viscoslide_postprocessing_h
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <viscoslide/indenter.h>
+#include <viscoslide/interaction_law.h>
+
+#include <vector>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  // Forces are per unit length (2D), in internal units.
+  struct SurfaceQuantities
+  {
+    double normal_force;     // Fn = integral of p = -p_LJ (compressive > 0)
+    double tangential_force; // Ft = integral over L of p du_y/dx (eq. 2)
+    double contact_length;   // measure of {g < contact gap threshold}
+    double absolute_force;   // integral of |p|, the residual scale
+    double minimum_gap;
+  };
+
+  struct ProfilePoint
+  {
+    double x, gap, pressure, u_y;
+
+    // for Utilities::MPI::gather
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &x &gap &pressure &u_y;
+    }
+  };
+
+  class SurfacePostprocessor
+  {
+  public:
+    SurfacePostprocessor(const InteractionLaw &law,
+                         const Indenter &      indenter,
+                         double                eps,
+                         double                contact_gap,
+                         unsigned int          face_quadrature_points,
+                         types::boundary_id    top_boundary);
+
+    SurfaceQuantities
+    integrate(const DoFHandler<2> &                dof_handler,
+              const TrilinosWrappers::MPI::Vector &solution,
+              double                               delta,
+              double                               s) const;
+
+    // Points along the whole top surface, sorted by x, complete on rank 0
+    // (empty elsewhere).
+    std::vector<ProfilePoint>
+    profile(const DoFHandler<2> &                dof_handler,
+            const TrilinosWrappers::MPI::Vector &solution,
+            double                               delta,
+            double                               s) const;
+
+    // x-intervals of the top faces whose gap range overlaps [g_lo, g_hi],
+    // gathered from all processes: the contact edges the mesh follows.
+    std::vector<std::pair<double, double>>
+    faces_in_gap_band(const DoFHandler<2> &                dof_handler,
+                      const TrilinosWrappers::MPI::Vector &solution,
+                      double                               delta,
+                      double                               s,
+                      double                               g_lo,
+                      double                               g_hi) const;
+
+  private:
+    const InteractionLaw &   law;
+    const Indenter &         indenter;
+    const double             eps;
+    const double             contact_gap;
+    const unsigned int       n_face_points;
+    const types::boundary_id top;
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,1032 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_out_faces.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <viscoslide/contact_problem.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace viscoslide
+{
+  namespace
+  {
+    // Boundary ids of GridGenerator::subdivided_hyper_rectangle(colorize).
+    constexpr types::boundary_id bottom_boundary = 2;
+    constexpr types::boundary_id top_boundary    = 3;
+
+    // Surface fields for DataOutFaces: pressure and gap from u_y and x.
+    class SurfaceFields : public DataPostprocessor<2>
+    {
+    public:
+      SurfaceFields(const InteractionLaw &law,
+                    const Indenter &      indenter,
+                    const Scales &        scales,
+                    const LoadState &     state)
+        : law(law)
+        , indenter(indenter)
+        , scales(scales)
+        , state(state)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>> &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          {
+            const double g = gap(indenter,
+                                 scales.eps,
+                                 state.delta,
+                                 state.s,
+                                 inputs.evaluation_points[q][0],
+                                 inputs.solution_values[q][1]);
+            computed[q](0) = -law.traction(g) / scales.sigma_max;
+            computed[q](1) = g / scales.eps;
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"p_hat", "gap_over_eps"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values | update_quadrature_points;
+      }
+
+    private:
+      const InteractionLaw &law;
+      const Indenter &      indenter;
+      const Scales &        scales;
+      const LoadState &     state;
+    };
+
+    // DataOutFaces over the locally owned faces of the top surface only.
+    class TopSurfaceDataOut : public DataOutFaces<2>
+    {
+    public:
+      TopSurfaceDataOut()
+        : DataOutFaces<2>(true)
+      {}
+
+      FaceDescriptor
+      first_face() override
+      {
+        for (const auto &cell : this->triangulation->active_cell_iterators())
+          if (cell->is_locally_owned())
+            if (const auto f = top_face(cell); f != numbers::invalid_unsigned_int)
+              return {cell, f};
+        return {};
+      }
+
+      FaceDescriptor
+      next_face(const FaceDescriptor &face) override
+      {
+        auto cell = face.first;
+        for (++cell; cell != this->triangulation->end(); ++cell)
+          if (cell->is_active() && cell->is_locally_owned())
+            if (const auto f = top_face(cell); f != numbers::invalid_unsigned_int)
+              return {cell, f};
+        return {};
+      }
+
+    private:
+      static unsigned int
+      top_face(const Triangulation<2>::cell_iterator &cell)
+      {
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == top_boundary)
+            return f;
+        return numbers::invalid_unsigned_int;
+      }
+    };
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    vector_interpretation()
+    {
+      return {DataComponentInterpretation::component_is_part_of_vector,
+              DataComponentInterpretation::component_is_part_of_vector};
+    }
+  } // namespace
+
+
+  ContactProblem::ContactProblem(const Parameters::AllParameters &parameters,
+                                 MPI_Comm mpi_communicator)
+    : prm(parameters)
+    , mpi_communicator(mpi_communicator)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , timer(mpi_communicator,
+            pcout,
+            TimerOutput::never,
+            TimerOutput::wall_times)
+    , scales(parameters)
+    , material(1. - std::pow(parameters.material.poisson_ratio, 2),
+               (1. - std::pow(parameters.material.poisson_ratio, 2)) /
+                 parameters.material.E0_over_Einf,
+               parameters.material.poisson_ratio,
+               scales.tau_arm)
+    , law(create_interaction_law(parameters.adhesion.law,
+                                 scales.dgamma,
+                                 scales.eps))
+    , indenter(std::make_unique<ParabolicIndenter>(scales.R))
+    , triangulation(mpi_communicator,
+                    Triangulation<dim>::limit_level_difference_at_vertices)
+    , fe(FE_Q<dim>(2), dim)
+    , dof_handler(triangulation)
+    , quadrature(3)
+    , face_quadrature(parameters.adhesion.face_quadrature_points)
+    , history_fe(QGauss<1>(3))
+    , history_dof_handler(triangulation)
+    , traction_scale(0.)
+    , postprocessor(*law,
+                    *indenter,
+                    scales.eps,
+                    parameters.adhesion.contact_gap,
+                    parameters.adhesion.face_quadrature_points,
+                    top_boundary)
+    , writer(parameters.output.directory, mpi_communicator)
+    , step_number(0)
+    , last_newton_iterations(0)
+    , last_step_cuts(0)
+    , last_step_relaxed(false)
+  {
+    // The history field's nodes are the Gauss points of the cell
+    // quadrature; find which node is which point once.
+    const auto &support = history_fe.get_unit_support_points();
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      for (unsigned int i = 0; i < support.size(); ++i)
+        if (support[i].distance(quadrature.point(q)) < 1e-12)
+          quadrature_to_history_dof.push_back(i);
+    AssertDimension(quadrature_to_history_dof.size(), quadrature.size());
+  }
+
+
+  // The block -W/2 < x < W/2, -H < y < 0 in square coarse cells.
+  void
+  ContactProblem::make_grid()
+  {
+    const double W = prm.geometry.domain_width, H = prm.geometry.height();
+    const unsigned int nx = std::max(1., std::round(W / std::min(W, H)));
+    const unsigned int ny = std::max(1., std::round(H / std::min(W, H)));
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {nx, ny},
+                                              Point<dim>(-W / 2, -H),
+                                              Point<dim>(W / 2, 0),
+                                              true);
+  }
+
+
+  void
+  ContactProblem::setup_system()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    dof_handler.distribute_dofs(fe);
+    history_dof_handler.distribute_dofs(history_fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    // Hanging nodes, and the base bonded to the rigid foundation.
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             bottom_boundary,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             constraints);
+    constraints.close();
+
+    TrilinosWrappers::SparsityPattern sp(locally_owned_dofs,
+                                         locally_owned_dofs,
+                                         locally_relevant_dofs,
+                                         mpi_communicator);
+    DoFTools::make_sparsity_pattern(
+      dof_handler,
+      sp,
+      constraints,
+      false,
+      Utilities::MPI::this_mpi_process(mpi_communicator));
+    sp.compress();
+    system_matrix.reinit(sp);
+
+    solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    old_solution.reinit(solution);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(system_rhs);
+    for (auto &h : history)
+      h.reinit(history_dof_handler.locally_owned_dofs(), mpi_communicator);
+  }
+
+
+  ArmStress
+  ContactProblem::arm_stress_at(const std::vector<double> &values,
+                                const unsigned int         q) const
+  {
+    const unsigned int n = quadrature.size();
+    ArmStress          h;
+    h.in_plane[0][0] = values[h_xx * n + q];
+    h.in_plane[1][1] = values[h_yy * n + q];
+    h.in_plane[0][1] = values[h_xy * n + q];
+    h.zz             = values[h_zz * n + q];
+    return h;
+  }
+
+
+  namespace
+  {
+    // The history values of one cell, component-major: values[c*n_q + q].
+    void
+    read_history(
+      const DoFHandler<2>::active_cell_iterator &          history_cell,
+      const std::vector<unsigned int> &                    q_to_dof,
+      const std::array<TrilinosWrappers::MPI::Vector, 5> &history,
+      std::vector<double> &                                values,
+      std::vector<types::global_dof_index> &               dofs)
+    {
+      history_cell->get_dof_indices(dofs);
+      const unsigned int n = q_to_dof.size();
+      values.resize(history.size() * n);
+      for (unsigned int c = 0; c < history.size(); ++c)
+        for (unsigned int q = 0; q < n; ++q)
+          values[c * n + q] = history[c](dofs[q_to_dof[q]]);
+    }
+  } // namespace
+
+
+  // Residual -R(u) and, if asked, the consistent tangent dR/du of
+  //   R(u)(v) = (sigma(u), eps(v)) - <p_LJ(g(u)), v_y>_top
+  //             + c <u_y - u_y^anchor, v_y>_top.
+  // The last term only acts during relaxation after an instability
+  // (surface_damping = c > 0).
+  void
+  ContactProblem::assemble(const bool with_matrix, const double surface_damping)
+  {
+    TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
+    if (with_matrix)
+      system_matrix = 0;
+    system_rhs = 0;
+
+    FEValues<dim>     fe_values(fe, quadrature, update_gradients | update_JxW_values);
+    FEFaceValues<dim> face_values(fe,
+                                  face_quadrature,
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    const FEValuesExtractors::Scalar uy(1);
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int n_q           = quadrature.size();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    Vector<double>     cell_rhs(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<types::global_dof_index> history_dofs(history_fe.n_dofs_per_cell());
+    std::vector<double>                  history_values;
+    std::vector<SymmetricTensor<2, dim>> strain(n_q), old_strain(n_q);
+    std::vector<SymmetricTensor<2, dim>> sym_grad_phi(dofs_per_cell);
+    std::vector<double>                  u_y(face_quadrature.size()),
+      anchor_u_y(face_quadrature.size());
+    std::vector<double> phi_y(dofs_per_cell);
+
+    const auto                  factors = material.step_factors(current.dt);
+    const SymmetricTensor<4, 2> C       = material.tangent(factors);
+    double                      abs_force = 0.;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix = 0;
+          cell_rhs    = 0;
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          fe_values[displacement].get_function_symmetric_gradients(old_solution,
+                                                                   old_strain);
+          const DoFHandler<dim>::active_cell_iterator history_cell(
+            &triangulation, cell->level(), cell->index(), &history_dof_handler);
+          read_history(history_cell,
+                       quadrature_to_history_dof,
+                       history,
+                       history_values,
+                       history_dofs);
+
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const ArmStress h =
+                material.updated_arm_stress(arm_stress_at(history_values, q),
+                                            strain[q] - old_strain[q],
+                                            factors);
+              const SymmetricTensor<2, dim> sigma = material.stress(strain[q], h);
+              const double                  JxW   = fe_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                sym_grad_phi[i] =
+                  fe_values[displacement].symmetric_gradient(i, q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  cell_rhs(i) -= sigma * sym_grad_phi[i] * JxW;
+                  if (with_matrix)
+                    {
+                      const SymmetricTensor<2, dim> C_phi_i =
+                        C * sym_grad_phi[i];
+                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                        cell_matrix(i, j) += C_phi_i * sym_grad_phi[j] * JxW;
+                    }
+                }
+            }
+
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == top_boundary)
+              {
+                face_values.reinit(cell, f);
+                face_values[uy].get_function_values(solution, u_y);
+                if (surface_damping > 0)
+                  face_values[uy].get_function_values(relaxation_anchor,
+                                                      anchor_u_y);
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    const double g = gap(*indenter,
+                                         scales.eps,
+                                         current.delta,
+                                         current.s,
+                                         face_values.quadrature_point(q)[0],
+                                         u_y[q]);
+                    double traction = law->traction(g);
+                    double stiffness = law->derivative(g);
+                    const double JxW = face_values.JxW(q);
+                    abs_force += std::abs(traction) * JxW;
+                    if (surface_damping > 0)
+                      {
+                        traction -= surface_damping * (u_y[q] - anchor_u_y[q]);
+                        stiffness += surface_damping;
+                      }
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      phi_y[i] = face_values[uy].value(i, q);
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      {
+                        cell_rhs(i) += traction * phi_y[i] * JxW;
+                        if (with_matrix)
+                          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                            cell_matrix(i, j) +=
+                              stiffness * phi_y[i] * phi_y[j] * JxW;
+                      }
+                  }
+              }
+
+          cell->get_dof_indices(local_dofs);
+          if (with_matrix)
+            constraints.distribute_local_to_global(
+              cell_matrix, cell_rhs, local_dofs, system_matrix, system_rhs);
+          else
+            constraints.distribute_local_to_global(cell_rhs,
+                                                   local_dofs,
+                                                   system_rhs);
+        }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    traction_scale = Utilities::MPI::sum(abs_force, mpi_communicator);
+  }
+
+
+  void
+  ContactProblem::solve_linear_system()
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    const bool         direct =
+      prm.solver.linear_solver == "direct" ||
+      (prm.solver.linear_solver == "automatic" &&
+       dof_handler.n_dofs() <= prm.solver.direct_solver_limit);
+    TrilinosWrappers::MPI::Vector du(locally_owned_dofs, mpi_communicator);
+    if (direct)
+      {
+        SolverControl                                  control(1, 0);
+        TrilinosWrappers::SolverDirect::AdditionalData data(false,
+                                                            "Amesos_Mumps");
+        TrilinosWrappers::SolverDirect solver(control, data);
+        solver.solve(system_matrix, du, system_rhs);
+      }
+    else
+      {
+        // The tangent is indefinite where p_LJ' < 0, so GMRES, not CG.
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        std::vector<std::vector<bool>>                    modes;
+        DoFTools::extract_constant_modes(dof_handler,
+                                         ComponentMask(dim, true),
+                                         modes);
+        data.constant_modes        = modes;
+        data.elliptic              = true;
+        data.higher_order_elements = true;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        amg.initialize(system_matrix, data);
+        SolverControl control(2000, 1e-10 * system_rhs.l2_norm());
+        SolverGMRES<TrilinosWrappers::MPI::Vector> solver(
+          control,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
+        solver.solve(system_matrix, du, system_rhs, amg);
+      }
+    constraints.distribute(du);
+    newton_update = du;
+  }
+
+
+  int
+  ContactProblem::solve_newton(const LoadState &target,
+                               const double     surface_damping)
+  {
+    current = target;
+    const double floor =
+      scales.sigma_max * prm.mesh.finest_cell; // one loaded finest cell
+    TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
+
+    assemble(true, surface_damping);
+    double residual = system_rhs.l2_norm();
+    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
+      {
+        if (!std::isfinite(residual))
+          {
+            pcout << "      Newton: residual is " << residual
+                  << " at iteration " << it << "\n";
+            return -1;
+          }
+        if (residual <= prm.solver.newton_tolerance * (traction_scale + floor))
+          return it;
+        if (it == prm.solver.max_newton_iterations)
+          break;
+
+        solve_linear_system();
+        if (!std::isfinite(newton_update.l2_norm()))
+          {
+            pcout << "      Newton: linear solve gave a non-finite update at "
+                     "iteration "
+                  << it << "\n";
+            return -1;
+          }
+
+        // Backtracking on the residual norm; accept the first step that
+        // reduces it, else give up (the caller cuts the step).
+        u0             = solution;
+        double alpha   = 1.;
+        bool   reduced = false;
+        for (unsigned int k = 0; k < (prm.solver.line_search ? 8 : 1); ++k)
+          {
+            TrilinosWrappers::MPI::Vector trial(u0);
+            trial.add(alpha, newton_update);
+            solution = trial;
+            assemble(false, surface_damping);
+            const double r = system_rhs.l2_norm();
+            if (std::isfinite(r) &&
+                (r < (1. - 1e-4 * alpha) * residual || !prm.solver.line_search))
+              {
+                reduced = true;
+                break;
+              }
+            alpha *= 0.5;
+          }
+        if (!reduced)
+          return -1;
+        assemble(true, surface_damping);
+        residual = system_rhs.l2_norm();
+      }
+    return -1;
+  }
+
+
+  // After a jump-in or jump-out no equilibrium is near the last one, and
+  // Newton cannot get there. Pseudo-time stepping with a surface dashpot
+  // of stiffness c follows the (fictitious) dynamics of the surface to the
+  // new branch; c is lowered while the steps converge easily and raised when
+  // they do not. Once the surface stops moving, plain Newton must converge:
+  // only an undamped equilibrium is ever accepted.
+  int
+  ContactProblem::relax_to_equilibrium(const LoadState &target)
+  {
+    TimerOutput::Scope t(timer, "relaxation");
+    const double       c0 = 16. * scales.dgamma / (scales.eps * scales.eps);
+    double             c  = c0;
+    int                total = 0;
+    relaxation_anchor.reinit(solution);
+    for (unsigned int k = 0; k < prm.solver.max_relaxation_steps; ++k)
+      {
+        relaxation_anchor = solution;
+        const int its     = solve_newton(target, c);
+        if (its < 0)
+          {
+            solution = relaxation_anchor;
+            c *= 4.;
+            if (c > 1e8 * c0)
+              return -1;
+            continue;
+          }
+        total += its;
+        TrilinosWrappers::MPI::Vector change(locally_owned_dofs,
+                                             mpi_communicator);
+        change = solution;
+        TrilinosWrappers::MPI::Vector anchor(locally_owned_dofs,
+                                             mpi_communicator);
+        anchor = relaxation_anchor;
+        change -= anchor;
+        if (change.linfty_norm() < 1e-3 * scales.eps)
+          {
+            const int final_its = solve_newton(target, 0.);
+            if (final_its >= 0)
+              return total + final_its;
+            solution = relaxation_anchor;
+          }
+        if (its <= 3)
+          c = std::max(0.5 * c, 1e-4 * c0);
+      }
+    return -1;
+  }
+
+
+  // Steps from the committed state to `target`, in as few substeps as
+  // Newton allows. Each accepted substep is solved on a mesh adapted to its
+  // own solution, committed and recorded.
+  bool
+  ContactProblem::advance_to(const LoadState &target, const std::string &phase)
+  {
+    const LoadState start    = committed;
+    const double    span     = std::abs(target.delta - start.delta);
+    double          done     = 0.;
+    double          fraction = 1.;
+    unsigned int    cuts     = 0;
+    auto            at       = [&](const double f) {
+      LoadState s;
+      s.delta = start.delta + f * (target.delta - start.delta);
+      s.s     = start.s + f * (target.s - start.s);
+      s.time  = start.time + f * (target.time - start.time);
+      return s;
+    };
+
+    while (done < 1. - 1e-12)
+      {
+        fraction           = std::min(fraction, 1. - done);
+        LoadState trial    = at(done + fraction);
+        trial.dt           = std::isfinite(target.dt) ?
+                               trial.time - at(done).time :
+                               std::numeric_limits<double>::infinity();
+        const auto backup  = solution;
+        bool       relaxed = false;
+        int        its     = solve_newton(trial);
+        if (its < 0)
+          {
+            solution = backup;
+            if (fraction * span > prm.loading.minimum_increment * 1.0001)
+              {
+                fraction *= 0.5;
+                ++cuts;
+                continue;
+              }
+            pcout << "   Instability at delta_hat = " << trial.delta
+                  << ": relaxing to the new branch\n";
+            its     = relax_to_equilibrium(trial);
+            relaxed = true;
+            if (its < 0)
+              return false;
+          }
+        for (unsigned int cycle = 0; cycle < prm.mesh.max_adaptation_cycles;
+             ++cycle)
+          {
+            if (!adapt_mesh())
+              break;
+            int more = solve_newton(trial);
+            if (more < 0)
+              more = relax_to_equilibrium(trial);
+            if (more < 0)
+              return false;
+            its += more;
+          }
+        commit_history();
+        done += fraction;
+        last_newton_iterations = its;
+        last_step_cuts         = cuts;
+        last_step_relaxed      = relaxed;
+        record_step(phase);
+        cuts = 0;
+        fraction *= 2.; // try to recover the full increment
+      }
+    return true;
+  }
+
+
+  void
+  ContactProblem::commit_history()
+  {
+    TimerOutput::Scope t(timer, "history update");
+    FEValues<dim> fe_values(fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n_q = quadrature.size();
+    std::vector<types::global_dof_index> history_dofs(history_fe.n_dofs_per_cell());
+    std::vector<double>                  values;
+    std::vector<SymmetricTensor<2, dim>> strain(n_q), old_strain(n_q);
+    const auto factors = material.step_factors(current.dt);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          fe_values[displacement].get_function_symmetric_gradients(old_solution,
+                                                                   old_strain);
+          const DoFHandler<dim>::active_cell_iterator history_cell(
+            &triangulation, cell->level(), cell->index(), &history_dof_handler);
+          read_history(
+            history_cell, quadrature_to_history_dof, history, values, history_dofs);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const ArmStress old_h = arm_stress_at(values, q);
+              const ArmStress h =
+                material.updated_arm_stress(old_h,
+                                            strain[q] - old_strain[q],
+                                            factors);
+              const auto i = history_dofs[quadrature_to_history_dof[q]];
+              history[h_xx](i) = h.in_plane[0][0];
+              history[h_yy](i) = h.in_plane[1][1];
+              history[h_xy](i) = h.in_plane[0][1];
+              history[h_zz](i) = h.zz;
+              history[dissipated_energy](i) +=
+                material.dissipated_energy(old_h, h, current.dt);
+            }
+        }
+    for (auto &h : history)
+      h.compress(VectorOperation::insert);
+    old_solution = solution;
+    committed    = current;
+  }
+
+
+  // Desired cell size: the finest cell at the contact edges, growing as
+  // grading x distance away from them. Cells are refined below their
+  // desired level and coarsened only two levels above it, so that a moving
+  // edge does not make the mesh flicker. Transfers solution, last committed
+  // solution and history. Returns whether the mesh changed.
+  bool
+  ContactProblem::adapt_mesh()
+  {
+    TimerOutput::Scope t(timer, "adapt mesh");
+    auto edges = postprocessor.faces_in_gap_band(dof_handler,
+                                                 solution,
+                                                 current.delta,
+                                                 current.s,
+                                                 prm.mesh.edge_gap_low,
+                                                 prm.mesh.edge_gap_high);
+    if (edges.empty()) // no contact yet: resolve the region under the apex
+      edges.emplace_back(current.s, current.s);
+
+    const double coarse_width =
+      prm.geometry.domain_width /
+      std::max(1., std::round(prm.geometry.domain_width /
+                              std::min(prm.geometry.domain_width,
+                                       prm.geometry.height())));
+    const int max_level = static_cast<int>(
+      std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
+
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto box = cell->bounding_box();
+          double     d   = std::numeric_limits<double>::max();
+          for (const auto &[a, b] : edges)
+            {
+              const double dx =
+                std::max({0., a - box.upper_bound(0), box.lower_bound(0) - b});
+              const double dy = std::max(0., -box.upper_bound(1));
+              d               = std::min(d, std::hypot(dx, dy));
+            }
+          const double h_desired =
+            std::max(prm.mesh.finest_cell, prm.mesh.grading * d);
+          const int level = std::clamp(
+            static_cast<int>(std::ceil(std::log2(coarse_width / h_desired) - 1e-9)),
+            0,
+            max_level);
+          if (cell->level() < level)
+            cell->set_refine_flag();
+          else if (cell->level() > level + 1)
+            cell->set_coarsen_flag();
+        }
+    triangulation.prepare_coarsening_and_refinement();
+    bool changes = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          (cell->refine_flag_set() || cell->coarsen_flag_set()))
+        changes = true;
+    if (Utilities::MPI::max(changes ? 1 : 0, mpi_communicator) == 0)
+      return false;
+
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      solution_transfer(dof_handler), history_transfer(history_dof_handler);
+    solution_transfer.prepare_for_coarsening_and_refinement(
+      std::vector<const TrilinosWrappers::MPI::Vector *>{&solution,
+                                                         &old_solution});
+    IndexSet history_relevant;
+    DoFTools::extract_locally_relevant_dofs(history_dof_handler,
+                                            history_relevant);
+    std::array<TrilinosWrappers::MPI::Vector, n_history_components> ghosted;
+    std::vector<const TrilinosWrappers::MPI::Vector *>             in;
+    for (unsigned int c = 0; c < n_history_components; ++c)
+      {
+        ghosted[c].reinit(history_dof_handler.locally_owned_dofs(),
+                          history_relevant,
+                          mpi_communicator);
+        ghosted[c] = history[c];
+        in.push_back(&ghosted[c]);
+      }
+    history_transfer.prepare_for_coarsening_and_refinement(in);
+
+    triangulation.execute_coarsening_and_refinement();
+    setup_system();
+
+    TrilinosWrappers::MPI::Vector u(locally_owned_dofs, mpi_communicator),
+      u_old(locally_owned_dofs, mpi_communicator);
+    std::vector<TrilinosWrappers::MPI::Vector *> out{&u, &u_old};
+    solution_transfer.interpolate(out);
+    constraints.distribute(u);
+    constraints.distribute(u_old);
+    solution     = u;
+    old_solution = u_old;
+
+    std::vector<TrilinosWrappers::MPI::Vector *> history_out;
+    for (auto &h : history)
+      history_out.push_back(&h);
+    history_transfer.interpolate(history_out);
+    return true;
+  }
+
+
+  void
+  ContactProblem::refine_initial_mesh()
+  {
+    for (unsigned int i = 0; i < 64 && adapt_mesh(); ++i)
+      ;
+  }
+
+
+  void
+  ContactProblem::record_step(const std::string &phase)
+  {
+    TimerOutput::Scope t(timer, "postprocessing");
+    const auto sq = postprocessor.integrate(dof_handler,
+                                            solution,
+                                            committed.delta,
+                                            committed.s);
+    using F       = CsvTable;
+    approach_table->add_row({std::to_string(step_number),
+                             phase,
+                             F::format(committed.time / scales.tau_ref),
+                             F::format(committed.delta / scales.eps),
+                             F::format(sq.normal_force / scales.force),
+                             F::format(sq.tangential_force / scales.force),
+                             F::format(sq.contact_length / scales.R),
+                             F::format(sq.minimum_gap / scales.eps),
+                             std::to_string(last_newton_iterations),
+                             std::to_string(last_step_cuts),
+                             std::to_string(last_step_relaxed ? 1 : 0),
+                             std::to_string(dof_handler.n_dofs()),
+                             std::to_string(triangulation.n_global_active_cells())});
+    pcout << "  step " << std::setw(4) << step_number << "  " << std::setw(8)
+          << phase << "  delta_hat " << std::setw(9) << committed.delta
+          << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
+          << "  L_hat " << std::setw(11) << sq.contact_length / scales.R
+          << "  Newton " << last_newton_iterations << "  dofs "
+          << dof_handler.n_dofs() << (last_step_relaxed ? "  (jump)" : "")
+          << std::endl;
+
+    if (prm.output.profile_every > 0 &&
+        step_number % prm.output.profile_every == 0)
+      write_profile("surface_profile-" +
+                    Utilities::int_to_string(step_number, 5) + ".csv");
+    if (prm.output.write_fields && prm.output.fields_every > 0 &&
+        step_number % prm.output.fields_every == 0)
+      write_fields();
+    ++step_number;
+  }
+
+
+  void
+  ContactProblem::write_profile(const std::string &filename)
+  {
+    const auto points =
+      postprocessor.profile(dof_handler, solution, committed.delta, committed.s);
+    CsvTable table(writer.path(filename),
+                   {"x_over_R", "gap_over_eps", "p_hat", "u_y_over_eps"},
+                   "delta_hat = " + CsvTable::format(committed.delta) +
+                     ", time_over_tau = " + CsvTable::format(committed.time),
+                   mpi_communicator);
+    for (const auto &p : points)
+      table.add_row({CsvTable::format(p.x / scales.R),
+                     CsvTable::format(p.gap / scales.eps),
+                     CsvTable::format(p.pressure / scales.sigma_max),
+                     CsvTable::format(p.u_y / scales.eps)});
+  }
+
+
+  // Volume fields (displacement, stress from the quadrature points,
+  // dissipation rate and accumulated dissipated energy, MPI subdomain,
+  // refinement level) and surface fields (pressure, gap).
+  void
+  ContactProblem::write_fields()
+  {
+    TimerOutput::Scope t(timer, "output");
+    enum
+    {
+      s_xx,
+      s_yy,
+      s_xy,
+      s_zz,
+      D,
+      n_fields
+    };
+    std::array<TrilinosWrappers::MPI::Vector, n_fields> fields;
+    for (auto &f : fields)
+      f.reinit(history_dof_handler.locally_owned_dofs(), mpi_communicator);
+
+    FEValues<dim> fe_values(fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    std::vector<types::global_dof_index> history_dofs(history_fe.n_dofs_per_cell());
+    std::vector<double>                  values;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          const DoFHandler<dim>::active_cell_iterator history_cell(
+            &triangulation, cell->level(), cell->index(), &history_dof_handler);
+          read_history(
+            history_cell, quadrature_to_history_dof, history, values, history_dofs);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const ArmStress h     = arm_stress_at(values, q);
+              const auto      sigma = material.stress(strain[q], h);
+              const auto      i     = history_dofs[quadrature_to_history_dof[q]];
+              fields[s_xx](i)       = sigma[0][0];
+              fields[s_yy](i)       = sigma[1][1];
+              fields[s_xy](i)       = sigma[0][1];
+              fields[s_zz](i)       = material.stress_zz(strain[q], h);
+              fields[D](i)          = material.dissipation_rate(h);
+            }
+        }
+    for (auto &f : fields)
+      f.compress(VectorOperation::insert);
+
+    Vector<float> subdomain(triangulation.n_active_cells()),
+      level(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          subdomain(cell->active_cell_index()) = cell->subdomain_id();
+          level(cell->active_cell_index())     = cell->level();
+        }
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+    data_out.add_data_vector(dof_handler,
+                             solution,
+                             std::vector<std::string>(dim, "displacement"),
+                             vector_interpretation());
+    const char *names[n_fields] = {
+      "stress_xx", "stress_yy", "stress_xy", "stress_zz", "dissipation_rate"};
+    for (unsigned int f = 0; f < n_fields; ++f)
+      data_out.add_data_vector(history_dof_handler, fields[f], names[f]);
+    data_out.add_data_vector(history_dof_handler,
+                             history[dissipated_energy],
+                             "dissipated_energy");
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.add_data_vector(level, "level");
+    data_out.build_patches(2);
+    writer.write_pvtu(data_out, "solution", step_number, committed.time);
+
+    SurfaceFields     surface_fields(*law, *indenter, scales, committed);
+    TopSurfaceDataOut surface_out;
+    surface_out.attach_dof_handler(dof_handler);
+    surface_out.add_data_vector(solution, surface_fields);
+    surface_out.build_patches(2);
+    writer.write_pvtu(static_cast<const DataOutFaces<dim> &>(surface_out),
+                      "surface", step_number, committed.time);
+  }
+
+
+  void
+  ContactProblem::run()
+  {
+    const std::string comment =
+      version_string() + "; time unit: " + prm.material.time_constant +
+      " time; forces per unit length in (pi dgamma^2 E0* R)^(1/3)";
+    approach_table = std::make_unique<CsvTable>(
+      writer.path("approach.csv"),
+      std::vector<std::string>{"step",
+                               "phase",
+                               "time_over_tau",
+                               "delta_hat",
+                               "F_n_hat",
+                               "F_t_hat",
+                               "L_hat",
+                               "min_gap_over_eps",
+                               "newton_iterations",
+                               "step_cuts",
+                               "jump",
+                               "n_dofs",
+                               "n_cells"},
+      comment,
+      mpi_communicator);
+
+    make_grid();
+    setup_system();
+    committed.delta = prm.loading.initial_approach;
+    current         = committed;
+    refine_initial_mesh();
+    pcout << "Initial mesh: " << triangulation.n_global_active_cells()
+          << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
+
+    auto fail = [&](const LoadState &target) {
+      write_profile("surface_profile_last_converged.csv");
+      AssertThrow(false,
+                  ExcMessage("Newton failed at step " +
+                             std::to_string(step_number) + ", delta_hat = " +
+                             std::to_string(target.delta) +
+                             ", time = " + std::to_string(target.time) +
+                             ", even with step cutting to the minimum "
+                             "increment and relaxation; the last converged "
+                             "state is in the output directory."));
+    };
+
+    // The loading program: a list of (phase, target) steps.
+    const double inf = std::numeric_limits<double>::infinity();
+    const double v   = prm.loading.approach_speed;
+    auto         ramp = [&](const std::string &phase, const double to) {
+      const double from = committed.delta;
+      const unsigned int n =
+        std::max(1., std::ceil(std::abs(to - from) / prm.loading.increment - 1e-9));
+      for (unsigned int k = 1; k <= n; ++k)
+        {
+          LoadState target = committed;
+          target.delta     = from + (to - from) * k / n;
+          target.dt        = v > 0 ? std::abs(target.delta - committed.delta) / v : inf;
+          target.time      = committed.time + (v > 0 ? target.dt : 0.);
+          if (!advance_to(target, phase))
+            fail(target);
+        }
+    };
+
+    {
+      LoadState first = committed;
+      if (!advance_to(first, "start"))
+        fail(first);
+    }
+    ramp("approach", prm.loading.final_approach);
+    if (prm.loading.hold_time > 0)
+      {
+        const double t0 = committed.time, T = prm.loading.hold_time;
+        const unsigned int n = prm.loading.hold_steps;
+        const double first   = std::min(1e-3, T / n);
+        for (unsigned int k = 1; k <= n; ++k)
+          {
+            LoadState target = committed;
+            target.time =
+              t0 + (n == 1 ? T : first * std::pow(T / first, (k - 1.) / (n - 1.)));
+            target.dt = target.time - committed.time;
+            if (!advance_to(target, "hold"))
+              fail(target);
+          }
+      }
+    if (prm.loading.retract)
+      ramp("retract", prm.loading.retract_to);
+
+    write_profile("surface_profile_final.csv");
+    if (prm.output.write_fields &&
+        (prm.output.fields_every == 0 ||
+         (step_number - 1) % prm.output.fields_every != 0))
+      write_fields();
+    timer.print_wall_time_statistics(mpi_communicator);
+  }
+} // namespace viscoslide

@@ -1,0 +1,144 @@
+#include <deal.II/base/revision.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/numerics/data_out_faces.h>
+
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+#ifndef VISCOSLIDE_VERSION
+#  define VISCOSLIDE_VERSION "unknown"
+#endif
+#ifndef VISCOSLIDE_GIT_REVISION
+#  define VISCOSLIDE_GIT_REVISION "unknown"
+#endif
+
+namespace viscoslide
+{
+  CsvTable::CsvTable(const std::string &             filename,
+                     const std::vector<std::string> &columns,
+                     const std::string &             comment,
+                     MPI_Comm                        comm)
+    : n_columns(columns.size())
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    file = std::make_unique<std::ofstream>(filename);
+    AssertThrow(*file,
+                Parameters::ExcInvalidInput("cannot open '" + filename +
+                                            "' for writing"));
+    if (!comment.empty())
+      *file << "# " << comment << '\n';
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      *file << (i ? "," : "") << columns[i];
+    *file << std::endl;
+  }
+
+  void
+  CsvTable::add_row(const std::vector<std::string> &values)
+  {
+    AssertDimension(values.size(), n_columns);
+    if (!file)
+      return;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      *file << (i ? "," : "") << values[i];
+    *file << std::endl;
+    AssertThrow(*file, ExcIO());
+  }
+
+  std::string
+  CsvTable::format(const double value)
+  {
+    std::ostringstream s;
+    s << std::setprecision(12) << value;
+    return s.str();
+  }
+
+
+  OutputWriter::OutputWriter(const std::string &directory, MPI_Comm comm)
+    : directory(directory)
+    , comm(comm)
+  {}
+
+  void
+  OutputWriter::prepare_directory(const std::string &directory,
+                                  const bool         overwrite,
+                                  MPI_Comm           comm)
+  {
+    namespace fs = std::filesystem;
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code ec;
+        if (fs::exists(fs::path(directory) / "parameters.prm") && !overwrite)
+          error = "output directory '" + directory +
+                  "' already holds the results of a run; choose another "
+                  "'Output/Output directory' or run with --overwrite";
+        else if (fs::create_directories(directory, ec), ec)
+          error = "cannot create output directory '" + directory +
+                  "': " + ec.message();
+        else
+          {
+            // Fail now, not at the first write hours later.
+            const auto    probe = fs::path(directory) / ".write_test";
+            std::ofstream test(probe);
+            if (!(test << "x"))
+              error = "output directory '" + directory + "' is not writable";
+            test.close();
+            fs::remove(probe, ec);
+          }
+      }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw Parameters::ExcInvalidInput(error);
+  }
+
+  std::string
+  OutputWriter::path(const std::string &filename) const
+  {
+    return (std::filesystem::path(directory) / filename).string();
+  }
+
+  template <typename DataOutType>
+  void
+  OutputWriter::write_pvtu(const DataOutType &data_out,
+                           const std::string &name,
+                           const unsigned int counter,
+                           const double       time)
+  {
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      directory + "/", name, counter, comm, 5, 0);
+    auto &records = pvd_records[name];
+    records.emplace_back(time, pvtu);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream pvd(path(name + ".pvd"));
+        DataOutBase::write_pvd_record(pvd, records);
+      }
+  }
+
+  template void
+  OutputWriter::write_pvtu(const DataOut<2> &,
+                           const std::string &,
+                           unsigned int,
+                           double);
+  template void
+  OutputWriter::write_pvtu(const DataOutFaces<2> &,
+                           const std::string &,
+                           unsigned int,
+                           double);
+
+
+  std::string
+  version_string()
+  {
+    return std::string("viscoslide ") + VISCOSLIDE_VERSION + " (git " +
+           VISCOSLIDE_GIT_REVISION + ", deal.II " + DEAL_II_PACKAGE_VERSION +
+           ")";
+  }
+} // namespace viscoslide

@@ -1,0 +1,490 @@
+#include <viscoslide/parameters.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace viscoslide
+{
+  namespace Parameters
+  {
+    namespace
+    {
+      // Patterns::Double(lo, hi) accepts the closed interval; most of our
+      // bounds are open ("a positive thickness"), so the check is ours.
+      void
+      require(const bool condition, const std::string &message)
+      {
+        if (!condition)
+          throw ExcInvalidInput(message);
+      }
+
+      std::string
+      entry(const std::string &section,
+            const std::string &name,
+            const double       value)
+      {
+        std::ostringstream s;
+        s << "'" << section << "/" << name << "' = " << value;
+        return s.str();
+      }
+    } // namespace
+
+
+    void
+    Output::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory that receives every file of the run: "
+                        "approach.csv, surface profiles, VTU/PVTU fields with "
+                        "their .pvd collection, and the parameter set "
+                        "actually used (parameters.prm, parameters.json). "
+                        "An existing directory that already holds results "
+                        "is refused unless the program is called with "
+                        "--overwrite.");
+      prm.declare_entry("Write fields",
+                        "true",
+                        Patterns::Bool(),
+                        "Write VTU/PVTU volume and surface fields.");
+      prm.declare_entry("Fields every",
+                        "10",
+                        Patterns::Integer(0),
+                        "Write fields every this many accepted steps (and "
+                        "always after the last step). 0: only the last.");
+      prm.declare_entry("Surface profile every",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write the surface profile CSV every this many "
+                        "accepted steps (and always after the last step). "
+                        "0: only the last.");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory     = prm.get("Output directory");
+      write_fields  = prm.get_bool("Write fields");
+      fields_every  = prm.get_integer("Fields every");
+      profile_every = prm.get_integer("Surface profile every");
+      prm.leave_subsection();
+      require(!directory.empty(),
+              "'Output/Output directory' must not be empty");
+    }
+
+
+    void
+    Material::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("E0 over Einf",
+                        "0.1",
+                        Patterns::Double(),
+                        "Ratio of the relaxed (low-frequency) to the "
+                        "instantaneous (high-frequency) Young's modulus of "
+                        "the standard linear solid, in (0, 1]. 1 makes the "
+                        "material elastic. Einf < E0 is unphysical and "
+                        "refused.");
+      prm.declare_entry("Poisson ratio",
+                        "0.49",
+                        Patterns::Double(),
+                        "Poisson ratio, the same for both branches, in "
+                        "[0, 0.5).");
+      prm.declare_entry(
+        "Time constant",
+        "relaxation",
+        Patterns::Selection("relaxation|retardation"),
+        "Which time constant tau makes V_hat = V tau/eps and time_over_tau "
+        "dimensionless. 'relaxation': tau is the relaxation time of the "
+        "Maxwell arm, E(t) = E0 + (Einf - E0) exp(-t/tau) (the paper's "
+        "wording). 'retardation': tau is the creep (retardation) time "
+        "tau_c = tau_relaxation Einf/E0 of J(t) = 1/E0 - (1/E0 - 1/Einf) "
+        "exp(-t/tau_c). The choice is written into every output file.");
+      prm.leave_subsection();
+    }
+
+    void
+    Material::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      E0_over_Einf  = prm.get_double("E0 over Einf");
+      poisson_ratio = prm.get_double("Poisson ratio");
+      time_constant = prm.get("Time constant");
+      prm.leave_subsection();
+      require(E0_over_Einf > 0 && E0_over_Einf <= 1,
+              entry("Material", "E0 over Einf", E0_over_Einf) +
+                " is outside (0, 1]: Einf must not be smaller than E0");
+      require(poisson_ratio >= 0 && poisson_ratio < 0.5,
+              entry("Material", "Poisson ratio", poisson_ratio) +
+                " is outside [0, 0.5)");
+    }
+
+
+    void
+    Adhesion::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Adhesion");
+      prm.declare_entry("Interaction law",
+                        "lennard-jones",
+                        Patterns::Selection("lennard-jones|repulsive"),
+                        "Surface traction-gap law on the top boundary. "
+                        "'lennard-jones': the 3-9 law of physics.md. "
+                        "'repulsive': only its repulsive branch (g < eps), "
+                        "i.e. frictionless contact without adhesion.");
+      prm.declare_entry("Tabor parameter",
+                        "6.08",
+                        Patterns::Double(),
+                        "muT = (R dgamma^2/(E0*^2 eps^3))^(1/3), computed with "
+                        "the relaxed modulus. 1: long-range, 6.08: "
+                        "short-range adhesion (the paper's two cases). With "
+                        "'repulsive' it only sets the stiffness of the "
+                        "repulsive wall.");
+      prm.declare_entry("R over eps",
+                        "1e4",
+                        Patterns::Double(),
+                        "Indenter radius R_hat = R/eps. The paper does not "
+                        "state it; with 1e4, dgamma/(E0* eps) = 0.15 at "
+                        "muT = 6.08. F_hat, delta_hat and p_hat do not "
+                        "depend on it; V_hat, L_hat and mu scale with "
+                        "sqrt(R_hat).");
+      prm.declare_entry("Contact gap threshold",
+                        "1.2",
+                        Patterns::Double(),
+                        "A surface point is in contact where the gap is "
+                        "below this many eps (the paper uses 1.2, the "
+                        "position of the Lennard-Jones peak traction).");
+      prm.declare_entry("Face quadrature points",
+                        "5",
+                        Patterns::Integer(2, 12),
+                        "Gauss points per top face for the adhesion "
+                        "integral.");
+      prm.leave_subsection();
+    }
+
+    void
+    Adhesion::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Adhesion");
+      law                    = prm.get("Interaction law");
+      tabor_parameter        = prm.get_double("Tabor parameter");
+      R_over_eps             = prm.get_double("R over eps");
+      contact_gap            = prm.get_double("Contact gap threshold");
+      face_quadrature_points = prm.get_integer("Face quadrature points");
+      prm.leave_subsection();
+      require(tabor_parameter > 0 && std::isfinite(tabor_parameter),
+              entry("Adhesion", "Tabor parameter", tabor_parameter) +
+                " must be positive");
+      require(R_over_eps >= 10 && std::isfinite(R_over_eps),
+              entry("Adhesion", "R over eps", R_over_eps) +
+                " must be at least 10 (Derjaguin approximation)");
+      require(contact_gap > 1,
+              entry("Adhesion", "Contact gap threshold", contact_gap) +
+                " must exceed 1 (the equilibrium gap)");
+    }
+
+
+    void
+    Geometry::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Substrate",
+                        "half-plane",
+                        Patterns::Selection("half-plane|layer"),
+                        "'half-plane': a block of Domain width x Domain "
+                        "height, large against the contact, base fixed. "
+                        "'layer': a layer of Layer thickness bonded to a "
+                        "rigid base.");
+      prm.declare_entry("Layer thickness",
+                        "100",
+                        Patterns::Double(),
+                        "t_hat = t/eps, used with Substrate = layer.");
+      prm.declare_entry("Domain width",
+                        "20000",
+                        Patterns::Double(),
+                        "W/eps, the lateral extent of the block (x from "
+                        "-W/2 to W/2). Lateral sides are traction free.");
+      prm.declare_entry("Domain height",
+                        "10000",
+                        Patterns::Double(),
+                        "H/eps of the half-plane block. Under displacement "
+                        "control the approach delta depends on it "
+                        "logarithmically (plane strain).");
+      prm.leave_subsection();
+    }
+
+    void
+    Geometry::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      substrate       = prm.get("Substrate");
+      layer_thickness = prm.get_double("Layer thickness");
+      domain_width    = prm.get_double("Domain width");
+      domain_height   = prm.get_double("Domain height");
+      prm.leave_subsection();
+      require(layer_thickness > 0 && std::isfinite(layer_thickness),
+              entry("Geometry", "Layer thickness", layer_thickness) +
+                " must be positive");
+      require(domain_width > 0 && std::isfinite(domain_width),
+              entry("Geometry", "Domain width", domain_width) +
+                " must be positive");
+      require(domain_height > 0 && std::isfinite(domain_height),
+              entry("Geometry", "Domain height", domain_height) +
+                " must be positive");
+    }
+
+
+    void
+    Loading::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      prm.declare_entry("Initial approach",
+                        "-2",
+                        Patterns::Double(),
+                        "delta_hat at the start: the apex is at a gap of "
+                        "1 - delta_hat eps from the undeformed surface.");
+      prm.declare_entry("Final approach",
+                        "3",
+                        Patterns::Double(),
+                        "delta_hat reached at the end of the approach "
+                        "(displacement control).");
+      prm.declare_entry("Approach increment",
+                        "0.1",
+                        Patterns::Double(),
+                        "Increment of delta_hat per step. Steps are halved "
+                        "automatically when Newton fails.");
+      prm.declare_entry("Minimum increment",
+                        "1e-3",
+                        Patterns::Double(),
+                        "Smallest increment step cutting may reach; below it "
+                        "a surface instability (jump-in, jump-out) is "
+                        "assumed and the new branch is found by damped "
+                        "relaxation.");
+      prm.declare_entry("Approach speed",
+                        "0",
+                        Patterns::Double(),
+                        "Normal speed V_n tau/eps. 0 means quasi-static: "
+                        "every step is fully relaxed (modulus E0).");
+      prm.declare_entry("Hold time",
+                        "0",
+                        Patterns::Double(),
+                        "After the approach, hold delta for this time "
+                        "(in tau) while the material relaxes.");
+      prm.declare_entry("Hold steps",
+                        "20",
+                        Patterns::Integer(1),
+                        "Time steps of the hold, spaced geometrically from "
+                        "1e-3 tau so that the relaxation is resolved.");
+      prm.declare_entry("Retract",
+                        "false",
+                        Patterns::Bool(),
+                        "After approach (and hold) retract to Retract to, "
+                        "completing a loading-unloading cycle.");
+      prm.declare_entry("Retract to",
+                        "-3",
+                        Patterns::Double(),
+                        "delta_hat at the end of the retraction.");
+      prm.leave_subsection();
+    }
+
+    void
+    Loading::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      initial_approach  = prm.get_double("Initial approach");
+      final_approach    = prm.get_double("Final approach");
+      increment         = prm.get_double("Approach increment");
+      minimum_increment = prm.get_double("Minimum increment");
+      approach_speed    = prm.get_double("Approach speed");
+      hold_time         = prm.get_double("Hold time");
+      hold_steps        = prm.get_integer("Hold steps");
+      retract           = prm.get_bool("Retract");
+      retract_to        = prm.get_double("Retract to");
+      prm.leave_subsection();
+      require(increment > 0, entry("Loading", "Approach increment", increment) +
+                               " must be positive");
+      require(minimum_increment > 0 && minimum_increment <= increment,
+              entry("Loading", "Minimum increment", minimum_increment) +
+                " must be positive and not above the Approach increment");
+      require(approach_speed >= 0,
+              entry("Loading", "Approach speed", approach_speed) +
+                " must not be negative");
+      require(hold_time >= 0,
+              entry("Loading", "Hold time", hold_time) +
+                " must not be negative");
+      require(final_approach >= initial_approach,
+              entry("Loading", "Final approach", final_approach) +
+                " is below the Initial approach");
+      require(!retract || retract_to < final_approach,
+              entry("Loading", "Retract to", retract_to) +
+                " must be below the Final approach");
+    }
+
+
+    void
+    Mesh::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Finest surface cell",
+                        "0.5",
+                        Patterns::Double(),
+                        "Size (in eps) of the finest cells, placed at the "
+                        "contact edges. The Lennard-Jones process zone is "
+                        "about 0.05 sqrt(R eps) at muT = 6.08 and must be "
+                        "resolved by several such cells.");
+      prm.declare_entry("Mesh grading",
+                        "0.25",
+                        Patterns::Double(),
+                        "Away from the contact edges the desired cell size "
+                        "grows as grading x distance to the nearest edge.");
+      prm.declare_entry("Edge gap lower",
+                        "1.05",
+                        Patterns::Double(),
+                        "A top face belongs to a contact edge where its gap "
+                        "range overlaps [lower, upper] (in eps).");
+      prm.declare_entry("Edge gap upper",
+                        "2.5",
+                        Patterns::Double(),
+                        "See Edge gap lower.");
+      prm.declare_entry("Adaptation cycles per step",
+                        "3",
+                        Patterns::Integer(0),
+                        "How often a step may be re-solved on a mesh adapted "
+                        "to its own solution. 0 freezes the initial mesh.");
+      prm.leave_subsection();
+    }
+
+    void
+    Mesh::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      finest_cell           = prm.get_double("Finest surface cell");
+      grading               = prm.get_double("Mesh grading");
+      edge_gap_low          = prm.get_double("Edge gap lower");
+      edge_gap_high         = prm.get_double("Edge gap upper");
+      max_adaptation_cycles = prm.get_integer("Adaptation cycles per step");
+      prm.leave_subsection();
+      require(finest_cell > 0,
+              entry("Mesh", "Finest surface cell", finest_cell) +
+                " must be positive");
+      require(grading > 0 && grading <= 2,
+              entry("Mesh", "Mesh grading", grading) +
+                " must be in (0, 2]");
+      require(edge_gap_high > edge_gap_low,
+              entry("Mesh", "Edge gap upper", edge_gap_high) +
+                " must exceed Edge gap lower");
+    }
+
+
+    void
+    Solver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Linear solver",
+                        "automatic",
+                        Patterns::Selection("automatic|direct|iterative"),
+                        "'direct': MUMPS through Trilinos Amesos. "
+                        "'iterative': GMRES with algebraic multigrid (ML). "
+                        "'automatic': direct up to Direct solver limit "
+                        "unknowns, iterative above.");
+      prm.declare_entry("Direct solver limit",
+                        "500000",
+                        Patterns::Integer(1),
+                        "See Linear solver.");
+      prm.declare_entry("Newton tolerance",
+                        "1e-9",
+                        Patterns::Double(),
+                        "Newton converges when the residual norm falls "
+                        "below this times the total absolute surface "
+                        "traction (plus one finest cell loaded with "
+                        "sigma_max).");
+      prm.declare_entry("Maximum Newton iterations",
+                        "25",
+                        Patterns::Integer(1),
+                        "Newton iterations before the step is cut.");
+      prm.declare_entry("Line search",
+                        "true",
+                        Patterns::Bool(),
+                        "Backtracking line search on the residual norm.");
+      prm.declare_entry("Maximum relaxation steps",
+                        "400",
+                        Patterns::Integer(1),
+                        "Pseudo-time steps allowed to land on a new branch "
+                        "after a surface instability.");
+      prm.leave_subsection();
+    }
+
+    void
+    Solver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      linear_solver         = prm.get("Linear solver");
+      direct_solver_limit   = prm.get_integer("Direct solver limit");
+      newton_tolerance      = prm.get_double("Newton tolerance");
+      max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+      line_search           = prm.get_bool("Line search");
+      max_relaxation_steps  = prm.get_integer("Maximum relaxation steps");
+      prm.leave_subsection();
+      require(newton_tolerance > 0 && newton_tolerance < 1,
+              entry("Solver", "Newton tolerance", newton_tolerance) +
+                " must be in (0, 1)");
+    }
+
+
+    void
+    AllParameters::declare(ParameterHandler &prm)
+    {
+      Output::declare(prm);
+      Material::declare(prm);
+      Adhesion::declare(prm);
+      Geometry::declare(prm);
+      Loading::declare(prm);
+      Mesh::declare(prm);
+      Solver::declare(prm);
+    }
+
+    void
+    AllParameters::parse(ParameterHandler &prm)
+    {
+      output.parse(prm);
+      material.parse(prm);
+      adhesion.parse(prm);
+      geometry.parse(prm);
+      loading.parse(prm);
+      mesh.parse(prm);
+      solver.parse(prm);
+      check_consistency();
+    }
+
+    void
+    AllParameters::check_consistency() const
+    {
+      require(mesh.finest_cell < geometry.height() / 4,
+              entry("Mesh", "Finest surface cell", mesh.finest_cell) +
+                " must be well below the substrate height " +
+                std::to_string(geometry.height()));
+      require(geometry.domain_width >= 2 * geometry.height() ||
+                geometry.substrate == "half-plane",
+              entry("Geometry", "Domain width", geometry.domain_width) +
+                " must be at least twice the Layer thickness");
+    }
+  } // namespace Parameters
+
+
+  Scales::Scales(const Parameters::AllParameters &p)
+    : eps(1.)
+    , R(p.adhesion.R_over_eps)
+    , E0_star(1.)
+    , Einf_star(1. / p.material.E0_over_Einf)
+    , dgamma(std::sqrt(std::pow(p.adhesion.tabor_parameter, 3) /
+                       p.adhesion.R_over_eps))
+    , sigma_max(16. * dgamma / (9. * std::sqrt(3.) * eps))
+    , force(std::cbrt(M_PI * dgamma * dgamma * E0_star * R))
+    , tau_arm(p.material.time_constant == "relaxation" ?
+                1. :
+                p.material.E0_over_Einf)
+    , tau_ref(1.)
+  {}
+} // namespace viscoslide

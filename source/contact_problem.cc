@@ -237,6 +237,7 @@ namespace viscoslide
 
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
     old_solution.reinit(solution);
+    last_increment.reinit(solution);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     newton_update.reinit(system_rhs);
     for (auto &h : history)
@@ -461,6 +462,11 @@ namespace viscoslide
   ContactProblem::solve_newton(const LoadState &target,
                                const double     surface_damping)
   {
+    // A damped pseudo-step that needs many iterations is too long: fail
+    // early and let relax_to_equilibrium() shorten it.
+    const unsigned int max_iterations =
+      surface_damping > 0 ? std::min(12u, prm.solver.max_newton_iterations) :
+                            prm.solver.max_newton_iterations;
     current = target;
     const double floor =
       scales.sigma_max * prm.mesh.finest_cell; // one loaded finest cell
@@ -468,7 +474,7 @@ namespace viscoslide
 
     assemble(true, surface_damping);
     double residual = system_rhs.l2_norm();
-    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
+    for (unsigned int it = 0; it <= max_iterations; ++it)
       {
         if (!std::isfinite(residual))
           {
@@ -476,9 +482,14 @@ namespace viscoslide
                   << " at iteration " << it << "\n";
             return -1;
           }
+        if (prm.solver.verbose)
+          pcout << "      Newton " << it << ": residual " << residual
+                << " (tolerance "
+                << prm.solver.newton_tolerance * (traction_scale + floor)
+                << ", damping " << surface_damping << ")" << std::endl;
         if (residual <= prm.solver.newton_tolerance * (traction_scale + floor))
           return it;
-        if (it == prm.solver.max_newton_iterations)
+        if (it == max_iterations)
           break;
 
         solve_linear_system();
@@ -510,6 +521,8 @@ namespace viscoslide
               }
             alpha *= 0.5;
           }
+        if (prm.solver.verbose)
+          pcout << "        line search: alpha = " << alpha << std::endl;
         if (!reduced)
           return -1;
         assemble(true, surface_damping);
@@ -520,48 +533,54 @@ namespace viscoslide
 
 
   // After a jump-in or jump-out no equilibrium is near the last one, and
-  // Newton cannot get there. Pseudo-time stepping with a surface dashpot
-  // of stiffness c follows the (fictitious) dynamics of the surface to the
-  // new branch; c is lowered while the steps converge easily and raised when
-  // they do not. Once the surface stops moving, plain Newton must converge:
-  // only an undamped equilibrium is ever accepted.
+  // Newton cannot get there. Pseudo-transient continuation (Kelley and
+  // Keyes 1998) follows the fictitious dynamics of a surface dashpot c:
+  // each pseudo-step is one Newton step on (K + c M_top) du = -R(u). While
+  // the surface travels the residual grows, so c is steered by the motion
+  // instead: pseudo-steps that move the surface by more than half an eps
+  // stiffen the dashpot, shorter ones soften it, and as the new branch is
+  // reached c vanishes and the iteration becomes plain Newton. Only an
+  // undamped equilibrium is accepted.
   int
   ContactProblem::relax_to_equilibrium(const LoadState &target)
   {
     TimerOutput::Scope t(timer, "relaxation");
-    const double       c0 = 16. * scales.dgamma / (scales.eps * scales.eps);
-    double             c  = c0;
-    int                total = 0;
+    current               = target;
+    const double c0       = 16. * scales.dgamma / (scales.eps * scales.eps);
+    const double floor    = scales.sigma_max * prm.mesh.finest_cell;
+    double       c        = c0;
     relaxation_anchor.reinit(solution);
+    TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
+
+    assemble(false, 0.);
+    double residual = system_rhs.l2_norm();
     for (unsigned int k = 0; k < prm.solver.max_relaxation_steps; ++k)
       {
-        relaxation_anchor = solution;
-        const int its     = solve_newton(target, c);
-        if (its < 0)
+        if (residual <= prm.solver.newton_tolerance * (traction_scale + floor))
+          return k;
+        relaxation_anchor = solution; // the dashpot term vanishes at u
+        assemble(true, c);
+        solve_linear_system();
+        u0 = solution;
+        TrilinosWrappers::MPI::Vector trial(u0);
+        trial.add(1., newton_update);
+        solution = trial;
+        assemble(false, 0.);
+        const double r = system_rhs.l2_norm();
+        if (prm.solver.verbose)
+          pcout << "      relaxation " << k << ": residual " << r
+                << ", dashpot " << c << std::endl;
+        if (!std::isfinite(r))
           {
-            solution = relaxation_anchor;
+            solution = u0;
             c *= 4.;
-            if (c > 1e8 * c0)
+            if (c > 1e10 * c0)
               return -1;
             continue;
           }
-        total += its;
-        TrilinosWrappers::MPI::Vector change(locally_owned_dofs,
-                                             mpi_communicator);
-        change = solution;
-        TrilinosWrappers::MPI::Vector anchor(locally_owned_dofs,
-                                             mpi_communicator);
-        anchor = relaxation_anchor;
-        change -= anchor;
-        if (change.linfty_norm() < 1e-3 * scales.eps)
-          {
-            const int final_its = solve_newton(target, 0.);
-            if (final_its >= 0)
-              return total + final_its;
-            solution = relaxation_anchor;
-          }
-        if (its <= 3)
-          c = std::max(0.5 * c, 1e-4 * c0);
+        const double move = newton_update.linfty_norm() / (0.5 * scales.eps);
+        c        = std::clamp(c * std::clamp(move, 0.25, 4.), 1e-14 * c0, 1e10 * c0);
+        residual = r;
       }
     return -1;
   }
@@ -595,7 +614,28 @@ namespace viscoslide
                                std::numeric_limits<double>::infinity();
         const auto backup  = solution;
         bool       relaxed = false;
-        int        its     = solve_newton(trial);
+        int        its     = -1;
+        // Along a smooth branch the secant predictor saves most of the
+        // Newton iterations; if it does not help, start from the last state.
+        const double ratio = last_increment_delta != 0. ?
+                               (trial.delta - committed.delta) / last_increment_delta :
+                               0.;
+        if (ratio != 0. && std::abs(ratio) <= 4.)
+          {
+            TrilinosWrappers::MPI::Vector predicted(locally_owned_dofs,
+                                                    mpi_communicator);
+            predicted = solution;
+            TrilinosWrappers::MPI::Vector increment(locally_owned_dofs,
+                                                    mpi_communicator);
+            increment = last_increment;
+            predicted.add(ratio, increment);
+            solution = predicted;
+            its      = solve_newton(trial);
+            if (its < 0)
+              solution = backup;
+          }
+        if (its < 0)
+          its = solve_newton(trial);
         if (its < 0)
           {
             solution = backup;
@@ -679,8 +719,15 @@ namespace viscoslide
         }
     for (auto &h : history)
       h.compress(VectorOperation::insert);
-    old_solution = solution;
-    committed    = current;
+    TrilinosWrappers::MPI::Vector increment(locally_owned_dofs, mpi_communicator),
+      old(locally_owned_dofs, mpi_communicator);
+    increment = solution;
+    old       = old_solution;
+    increment -= old;
+    last_increment       = increment;
+    last_increment_delta = current.delta - committed.delta;
+    old_solution         = solution;
+    committed            = current;
   }
 
 
@@ -746,7 +793,8 @@ namespace viscoslide
       solution_transfer(dof_handler), history_transfer(history_dof_handler);
     solution_transfer.prepare_for_coarsening_and_refinement(
       std::vector<const TrilinosWrappers::MPI::Vector *>{&solution,
-                                                         &old_solution});
+                                                         &old_solution,
+                                                         &last_increment});
     IndexSet history_relevant;
     DoFTools::extract_locally_relevant_dofs(history_dof_handler,
                                             history_relevant);
@@ -766,13 +814,16 @@ namespace viscoslide
     setup_system();
 
     TrilinosWrappers::MPI::Vector u(locally_owned_dofs, mpi_communicator),
-      u_old(locally_owned_dofs, mpi_communicator);
-    std::vector<TrilinosWrappers::MPI::Vector *> out{&u, &u_old};
+      u_old(locally_owned_dofs, mpi_communicator),
+      du(locally_owned_dofs, mpi_communicator);
+    std::vector<TrilinosWrappers::MPI::Vector *> out{&u, &u_old, &du};
     solution_transfer.interpolate(out);
     constraints.distribute(u);
     constraints.distribute(u_old);
-    solution     = u;
-    old_solution = u_old;
+    constraints.distribute(du);
+    solution       = u;
+    old_solution   = u_old;
+    last_increment = du;
 
     std::vector<TrilinosWrappers::MPI::Vector *> history_out;
     for (auto &h : history)
@@ -970,14 +1021,13 @@ namespace viscoslide
 
     auto fail = [&](const LoadState &target) {
       write_profile("surface_profile_last_converged.csv");
-      AssertThrow(false,
-                  ExcMessage("Newton failed at step " +
-                             std::to_string(step_number) + ", delta_hat = " +
-                             std::to_string(target.delta) +
-                             ", time = " + std::to_string(target.time) +
-                             ", even with step cutting to the minimum "
-                             "increment and relaxation; the last converged "
-                             "state is in the output directory."));
+      throw std::runtime_error(
+        "Newton failed at step " + std::to_string(step_number) +
+        " (delta_hat = " + std::to_string(target.delta) +
+        ", time_over_tau = " + std::to_string(target.time) +
+        ") even after cutting the step to 'Loading/Minimum increment' and "
+        "relaxing to a new branch; the last converged surface profile is "
+        "in surface_profile_last_converged.csv");
     };
 
     // The loading program: a list of (phase, target) steps.

@@ -413,6 +413,10 @@ namespace viscoslide
                         Patterns::Integer(1),
                         "Pseudo-time steps allowed to land on a new branch "
                         "after a surface instability.");
+      prm.declare_entry("Verbose",
+                        "false",
+                        Patterns::Bool(),
+                        "Print every Newton residual and line-search step.");
       prm.leave_subsection();
     }
 
@@ -426,6 +430,7 @@ namespace viscoslide
       max_newton_iterations = prm.get_integer("Maximum Newton iterations");
       line_search           = prm.get_bool("Line search");
       max_relaxation_steps  = prm.get_integer("Maximum relaxation steps");
+      verbose               = prm.get_bool("Verbose");
       prm.leave_subsection();
       require(newton_tolerance > 0 && newton_tolerance < 1,
               entry("Solver", "Newton tolerance", newton_tolerance) +

@@ -142,6 +142,10 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  newton_update;
     TrilinosWrappers::MPI::Vector  relaxation_anchor; // ghosted
+    // Change of the solution over the last committed step and the change of
+    // delta it came with: the secant predictor of the next step.
+    TrilinosWrappers::MPI::Vector last_increment; // ghosted
+    double                        last_increment_delta = 0.;
 
     // One vector per history component, non-ghosted (DG dofs of a cell are
     // owned by its owner).

@@ -115,6 +115,7 @@ namespace viscoslide
       unsigned int max_newton_iterations;
       bool         line_search;
       unsigned int max_relaxation_steps;
+      bool         verbose;
 
       static void
       declare(ParameterHandler &prm);

@@ -105,6 +105,16 @@ main(int argc, char *argv[])
                                       overwrite,
                                       comm);
     }
+  catch (ExceptionBase &e) // ParameterHandler's: show only its message
+    {
+      if (root)
+        {
+          std::cerr << "viscoslide: error in parameter file '" << input
+                    << "':\n";
+          e.print_info(std::cerr);
+        }
+      return 1;
+    }
   catch (std::exception &e)
     {
       if (root)
@@ -134,8 +144,9 @@ main(int argc, char *argv[])
     }
   catch (std::exception &e)
     {
-      std::cerr << "\nviscoslide: run failed:\n" << e.what() << std::endl;
-      MPI_Abort(comm, 2);
+      // Failures of the solver are collective, so every process ends here.
+      if (root)
+        std::cerr << "\nviscoslide: run failed:\n" << e.what() << std::endl;
       return 2;
     }
   return 0;

@@ -29,9 +29,9 @@ namespace viscoslide
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     file = std::make_unique<std::ofstream>(filename);
-    AssertThrow(*file,
-                Parameters::ExcInvalidInput("cannot open '" + filename +
-                                            "' for writing"));
+    if (!*file)
+      throw Parameters::ExcInvalidInput("cannot open '" + filename +
+                                        "' for writing");
     if (!comment.empty())
       *file << "# " << comment << '\n';
     for (std::size_t i = 0; i < columns.size(); ++i)
@@ -48,7 +48,9 @@ namespace viscoslide
     for (std::size_t i = 0; i < values.size(); ++i)
       *file << (i ? "," : "") << values[i];
     *file << std::endl;
-    AssertThrow(*file, ExcIO());
+    if (!*file)
+      throw std::runtime_error("writing a row of a CSV file failed (disk "
+                               "full?)");
   }
 
   std::string

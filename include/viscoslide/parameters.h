@@ -8,6 +8,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace viscoslide
@@ -146,9 +147,15 @@ namespace viscoslide
       check_consistency() const;
     };
 
-    DeclException1(ExcInvalidInput,
-                   std::string,
-                   << "Invalid input: " << arg1);
+    // Bad input: the message names the entry, its value and what is
+    // allowed. A plain exception, so the user sees just that sentence.
+    class ExcInvalidInput : public std::runtime_error
+    {
+    public:
+      explicit ExcInvalidInput(const std::string &message)
+        : std::runtime_error(message)
+      {}
+    };
   } // namespace Parameters
 
 

@@ -40,19 +40,20 @@ namespace viscoslide
     {
     public:
       SurfaceFields(const InteractionLaw &law,
-                    const Indenter &      indenter,
-                    const Scales &        scales,
-                    const LoadState &     state)
+                    const Indenter       &indenter,
+                    const Scales         &scales,
+                    const LoadState      &state)
         : law(law)
         , indenter(indenter)
         , scales(scales)
         , state(state)
-      {}
+      {
+      }
 
       void
       evaluate_vector_field(
         const DataPostprocessorInputs::Vector<2> &inputs,
-        std::vector<Vector<double>> &computed) const override
+        std::vector<Vector<double>>              &computed) const override
       {
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
           {
@@ -81,9 +82,9 @@ namespace viscoslide
 
     private:
       const InteractionLaw &law;
-      const Indenter &      indenter;
-      const Scales &        scales;
-      const LoadState &     state;
+      const Indenter       &indenter;
+      const Scales         &scales;
+      const LoadState      &state;
     };
 
     // DataOutFaces over the locally owned faces of the top surface only.
@@ -92,14 +93,16 @@ namespace viscoslide
     public:
       TopSurfaceDataOut()
         : DataOutFaces<2>(true)
-      {}
+      {
+      }
 
       FaceDescriptor
       first_face() override
       {
         for (const auto &cell : this->triangulation->active_cell_iterators())
           if (cell->is_locally_owned())
-            if (const auto f = top_face(cell); f != numbers::invalid_unsigned_int)
+            if (const auto f = top_face(cell);
+                f != numbers::invalid_unsigned_int)
               return {cell, f};
         return {};
       }
@@ -110,7 +113,8 @@ namespace viscoslide
         auto cell = face.first;
         for (++cell; cell != this->triangulation->end(); ++cell)
           if (cell->is_active() && cell->is_locally_owned())
-            if (const auto f = top_face(cell); f != numbers::invalid_unsigned_int)
+            if (const auto f = top_face(cell);
+                f != numbers::invalid_unsigned_int)
               return {cell, f};
         return {};
       }
@@ -140,8 +144,7 @@ namespace viscoslide
                                  MPI_Comm mpi_communicator)
     : prm(parameters)
     , mpi_communicator(mpi_communicator)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , timer(mpi_communicator,
             pcout,
             TimerOutput::never,
@@ -192,7 +195,7 @@ namespace viscoslide
   void
   ContactProblem::make_grid()
   {
-    const double W = prm.geometry.domain_width, H = prm.geometry.height();
+    const double       W = prm.geometry.domain_width, H = prm.geometry.height();
     const unsigned int nx = std::max(1., std::round(W / std::min(W, H)));
     const unsigned int ny = std::max(1., std::round(H / std::min(W, H)));
     GridGenerator::subdivided_hyper_rectangle(triangulation,
@@ -226,16 +229,18 @@ namespace viscoslide
                                          locally_owned_dofs,
                                          locally_relevant_dofs,
                                          mpi_communicator);
-    DoFTools::make_sparsity_pattern(
-      dof_handler,
-      sp,
-      constraints,
-      false,
-      Utilities::MPI::this_mpi_process(mpi_communicator));
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sp,
+                                    constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
     sp.compress();
     system_matrix.reinit(sp);
 
-    solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
     old_solution.reinit(solution);
     last_increment.reinit(solution);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
@@ -263,12 +268,11 @@ namespace viscoslide
   {
     // The history values of one cell, component-major: values[c*n_q + q].
     void
-    read_history(
-      const DoFHandler<2>::active_cell_iterator &          history_cell,
-      const std::vector<unsigned int> &                    q_to_dof,
-      const std::array<TrilinosWrappers::MPI::Vector, 5> &history,
-      std::vector<double> &                                values,
-      std::vector<types::global_dof_index> &               dofs)
+    read_history(const DoFHandler<2>::active_cell_iterator &history_cell,
+                 const std::vector<unsigned int>           &q_to_dof,
+                 const std::array<TrilinosWrappers::MPI::Vector, 5> &history,
+                 std::vector<double>                                &values,
+                 std::vector<types::global_dof_index>               &dofs)
     {
       history_cell->get_dof_indices(dofs);
       const unsigned int n = q_to_dof.size();
@@ -293,8 +297,10 @@ namespace viscoslide
       system_matrix = 0;
     system_rhs = 0;
 
-    FEValues<dim>     fe_values(fe, quadrature, update_gradients | update_JxW_values);
-    FEFaceValues<dim> face_values(fe,
+    FEValues<dim>                    fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    FEFaceValues<dim>                face_values(fe,
                                   face_quadrature,
                                   update_values | update_quadrature_points |
                                     update_JxW_values);
@@ -306,7 +312,8 @@ namespace viscoslide
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     Vector<double>     cell_rhs(dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
-    std::vector<types::global_dof_index> history_dofs(history_fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> history_dofs(
+      history_fe.n_dofs_per_cell());
     std::vector<double>                  history_values;
     std::vector<SymmetricTensor<2, dim>> strain(n_q), old_strain(n_q);
     std::vector<SymmetricTensor<2, dim>> sym_grad_phi(dofs_per_cell);
@@ -314,8 +321,8 @@ namespace viscoslide
       anchor_u_y(face_quadrature.size());
     std::vector<double> phi_y(dofs_per_cell);
 
-    const auto                  factors = material.step_factors(current.dt);
-    const SymmetricTensor<4, 2> C       = material.tangent(factors);
+    const auto                  factors   = material.step_factors(current.dt);
+    const SymmetricTensor<4, 2> C         = material.tangent(factors);
     double                      abs_force = 0.;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -342,8 +349,9 @@ namespace viscoslide
                 material.updated_arm_stress(arm_stress_at(history_values, q),
                                             strain[q] - old_strain[q],
                                             factors);
-              const SymmetricTensor<2, dim> sigma = material.stress(strain[q], h);
-              const double                  JxW   = fe_values.JxW(q);
+              const SymmetricTensor<2, dim> sigma =
+                material.stress(strain[q], h);
+              const double JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 sym_grad_phi[i] =
                   fe_values[displacement].symmetric_gradient(i, q);
@@ -371,15 +379,15 @@ namespace viscoslide
                                                       anchor_u_y);
                 for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                   {
-                    const double g = gap(*indenter,
+                    const double g         = gap(*indenter,
                                          scales.eps,
                                          current.delta,
                                          current.s,
                                          face_values.quadrature_point(q)[0],
                                          u_y[q]);
-                    double traction = law->traction(g);
-                    double stiffness = law->derivative(g);
-                    const double JxW = face_values.JxW(q);
+                    double       traction  = law->traction(g);
+                    double       stiffness = law->derivative(g);
+                    const double JxW       = face_values.JxW(q);
                     abs_force += std::abs(traction) * JxW;
                     if (surface_damping > 0)
                       {
@@ -429,7 +437,7 @@ namespace viscoslide
         SolverControl                                  control(1, 0);
         TrilinosWrappers::SolverDirect::AdditionalData data(false,
                                                             "Amesos_Mumps");
-        TrilinosWrappers::SolverDirect solver(control, data);
+        TrilinosWrappers::SolverDirect                 solver(control, data);
         solver.solve(system_matrix, du, system_rhs);
       }
     else
@@ -465,8 +473,8 @@ namespace viscoslide
     // A damped pseudo-step that needs many iterations is too long: fail
     // early and let relax_to_equilibrium() shorten it.
     const unsigned int max_iterations =
-      surface_damping > 0 ? std::min(12u, prm.solver.max_newton_iterations) :
-                            prm.solver.max_newton_iterations;
+      surface_damping > 0 ? std::min(12u, prm.solver.max_newton_iterations)
+                          : prm.solver.max_newton_iterations;
     current = target;
     const double floor =
       scales.sigma_max * prm.mesh.finest_cell; // one loaded finest cell
@@ -545,10 +553,10 @@ namespace viscoslide
   ContactProblem::relax_to_equilibrium(const LoadState &target)
   {
     TimerOutput::Scope t(timer, "relaxation");
-    current               = target;
-    const double c0       = 16. * scales.dgamma / (scales.eps * scales.eps);
-    const double floor    = scales.sigma_max * prm.mesh.finest_cell;
-    double       c        = c0;
+    current            = target;
+    const double c0    = 16. * scales.dgamma / (scales.eps * scales.eps);
+    const double floor = scales.sigma_max * prm.mesh.finest_cell;
+    double       c     = c0;
     relaxation_anchor.reinit(solution);
     TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
 
@@ -579,7 +587,7 @@ namespace viscoslide
             continue;
           }
         const double move = newton_update.linfty_norm() / (0.5 * scales.eps);
-        c        = std::clamp(c * std::clamp(move, 0.25, 4.), 1e-14 * c0, 1e10 * c0);
+        c = std::clamp(c * std::clamp(move, 0.25, 4.), 1e-14 * c0, 1e10 * c0);
         residual = r;
       }
     return -1;
@@ -609,17 +617,18 @@ namespace viscoslide
       {
         fraction           = std::min(fraction, 1. - done);
         LoadState trial    = at(done + fraction);
-        trial.dt           = std::isfinite(target.dt) ?
-                               trial.time - at(done).time :
-                               std::numeric_limits<double>::infinity();
+        trial.dt           = std::isfinite(target.dt)
+                               ? trial.time - at(done).time
+                               : std::numeric_limits<double>::infinity();
         const auto backup  = solution;
         bool       relaxed = false;
         int        its     = -1;
         // Along a smooth branch the secant predictor saves most of the
         // Newton iterations; if it does not help, start from the last state.
-        const double ratio = last_increment_delta != 0. ?
-                               (trial.delta - committed.delta) / last_increment_delta :
-                               0.;
+        const double ratio =
+          last_increment_delta != 0.
+            ? (trial.delta - committed.delta) / last_increment_delta
+            : 0.;
         if (ratio != 0. && std::abs(ratio) <= 4.)
           {
             TrilinosWrappers::MPI::Vector predicted(locally_owned_dofs,
@@ -681,10 +690,11 @@ namespace viscoslide
   ContactProblem::commit_history()
   {
     TimerOutput::Scope t(timer, "history update");
-    FEValues<dim> fe_values(fe, quadrature, update_gradients);
+    FEValues<dim>      fe_values(fe, quadrature, update_gradients);
     const FEValuesExtractors::Vector     displacement(0);
     const unsigned int                   n_q = quadrature.size();
-    std::vector<types::global_dof_index> history_dofs(history_fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> history_dofs(
+      history_fe.n_dofs_per_cell());
     std::vector<double>                  values;
     std::vector<SymmetricTensor<2, dim>> strain(n_q), old_strain(n_q);
     const auto factors = material.step_factors(current.dt);
@@ -699,8 +709,11 @@ namespace viscoslide
                                                                    old_strain);
           const DoFHandler<dim>::active_cell_iterator history_cell(
             &triangulation, cell->level(), cell->index(), &history_dof_handler);
-          read_history(
-            history_cell, quadrature_to_history_dof, history, values, history_dofs);
+          read_history(history_cell,
+                       quadrature_to_history_dof,
+                       history,
+                       values,
+                       history_dofs);
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const ArmStress old_h = arm_stress_at(values, q);
@@ -708,7 +721,7 @@ namespace viscoslide
                 material.updated_arm_stress(old_h,
                                             strain[q] - old_strain[q],
                                             factors);
-              const auto i = history_dofs[quadrature_to_history_dof[q]];
+              const auto i     = history_dofs[quadrature_to_history_dof[q]];
               history[h_xx](i) = h.in_plane[0][0];
               history[h_yy](i) = h.in_plane[1][1];
               history[h_xy](i) = h.in_plane[0][1];
@@ -719,7 +732,8 @@ namespace viscoslide
         }
     for (auto &h : history)
       h.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector increment(locally_owned_dofs, mpi_communicator),
+    TrilinosWrappers::MPI::Vector increment(locally_owned_dofs,
+                                            mpi_communicator),
       old(locally_owned_dofs, mpi_communicator);
     increment = solution;
     old       = old_solution;
@@ -740,7 +754,7 @@ namespace viscoslide
   ContactProblem::adapt_mesh()
   {
     TimerOutput::Scope t(timer, "adapt mesh");
-    auto edges = postprocessor.faces_in_gap_band(dof_handler,
+    auto               edges = postprocessor.faces_in_gap_band(dof_handler,
                                                  solution,
                                                  current.delta,
                                                  current.s,
@@ -751,9 +765,10 @@ namespace viscoslide
 
     const double coarse_width =
       prm.geometry.domain_width /
-      std::max(1., std::round(prm.geometry.domain_width /
-                              std::min(prm.geometry.domain_width,
-                                       prm.geometry.height())));
+      std::max(1.,
+               std::round(
+                 prm.geometry.domain_width /
+                 std::min(prm.geometry.domain_width, prm.geometry.height())));
     const int max_level = static_cast<int>(
       std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
 
@@ -771,10 +786,11 @@ namespace viscoslide
             }
           const double h_desired =
             std::max(prm.mesh.finest_cell, prm.mesh.grading * d);
-          const int level = std::clamp(
-            static_cast<int>(std::ceil(std::log2(coarse_width / h_desired) - 1e-9)),
-            0,
-            max_level);
+          const int level =
+            std::clamp(static_cast<int>(
+                         std::ceil(std::log2(coarse_width / h_desired) - 1e-9)),
+                       0,
+                       max_level);
           if (cell->level() < level)
             cell->set_refine_flag();
           else if (cell->level() > level + 1)
@@ -799,7 +815,7 @@ namespace viscoslide
     DoFTools::extract_locally_relevant_dofs(history_dof_handler,
                                             history_relevant);
     std::array<TrilinosWrappers::MPI::Vector, n_history_components> ghosted;
-    std::vector<const TrilinosWrappers::MPI::Vector *>             in;
+    std::vector<const TrilinosWrappers::MPI::Vector *>              in;
     for (unsigned int c = 0; c < n_history_components; ++c)
       {
         ghosted[c].reinit(history_dof_handler.locally_owned_dofs(),
@@ -845,24 +861,25 @@ namespace viscoslide
   ContactProblem::record_step(const std::string &phase)
   {
     TimerOutput::Scope t(timer, "postprocessing");
-    const auto sq = postprocessor.integrate(dof_handler,
+    const auto         sq = postprocessor.integrate(dof_handler,
                                             solution,
                                             committed.delta,
                                             committed.s);
-    using F       = CsvTable;
-    approach_table->add_row({std::to_string(step_number),
-                             phase,
-                             F::format(committed.time / scales.tau_ref),
-                             F::format(committed.delta / scales.eps),
-                             F::format(sq.normal_force / scales.force),
-                             F::format(sq.tangential_force / scales.force),
-                             F::format(sq.contact_length / scales.R),
-                             F::format(sq.minimum_gap / scales.eps),
-                             std::to_string(last_newton_iterations),
-                             std::to_string(last_step_cuts),
-                             std::to_string(last_step_relaxed ? 1 : 0),
-                             std::to_string(dof_handler.n_dofs()),
-                             std::to_string(triangulation.n_global_active_cells())});
+    using F               = CsvTable;
+    approach_table->add_row(
+      {std::to_string(step_number),
+       phase,
+       F::format(committed.time / scales.tau_ref),
+       F::format(committed.delta / scales.eps),
+       F::format(sq.normal_force / scales.force),
+       F::format(sq.tangential_force / scales.force),
+       F::format(sq.contact_length / scales.R),
+       F::format(sq.minimum_gap / scales.eps),
+       std::to_string(last_newton_iterations),
+       std::to_string(last_step_cuts),
+       std::to_string(last_step_relaxed ? 1 : 0),
+       std::to_string(dof_handler.n_dofs()),
+       std::to_string(triangulation.n_global_active_cells())});
     pcout << "  step " << std::setw(4) << step_number << "  " << std::setw(8)
           << phase << "  delta_hat " << std::setw(9) << committed.delta
           << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
@@ -885,9 +902,11 @@ namespace viscoslide
   void
   ContactProblem::write_profile(const std::string &filename)
   {
-    const auto points =
-      postprocessor.profile(dof_handler, solution, committed.delta, committed.s);
-    CsvTable table(writer.path(filename),
+    const auto points = postprocessor.profile(dof_handler,
+                                              solution,
+                                              committed.delta,
+                                              committed.s);
+    CsvTable   table(writer.path(filename),
                    {"x_over_R", "gap_over_eps", "p_hat", "u_y_over_eps"},
                    "delta_hat = " + CsvTable::format(committed.delta) +
                      ", time_over_tau = " + CsvTable::format(committed.time),
@@ -923,8 +942,9 @@ namespace viscoslide
     FEValues<dim> fe_values(fe, quadrature, update_gradients);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-    std::vector<types::global_dof_index> history_dofs(history_fe.n_dofs_per_cell());
-    std::vector<double>                  values;
+    std::vector<types::global_dof_index> history_dofs(
+      history_fe.n_dofs_per_cell());
+    std::vector<double> values;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -933,18 +953,21 @@ namespace viscoslide
                                                                    strain);
           const DoFHandler<dim>::active_cell_iterator history_cell(
             &triangulation, cell->level(), cell->index(), &history_dof_handler);
-          read_history(
-            history_cell, quadrature_to_history_dof, history, values, history_dofs);
+          read_history(history_cell,
+                       quadrature_to_history_dof,
+                       history,
+                       values,
+                       history_dofs);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const ArmStress h     = arm_stress_at(values, q);
               const auto      sigma = material.stress(strain[q], h);
-              const auto      i     = history_dofs[quadrature_to_history_dof[q]];
-              fields[s_xx](i)       = sigma[0][0];
-              fields[s_yy](i)       = sigma[1][1];
-              fields[s_xy](i)       = sigma[0][1];
-              fields[s_zz](i)       = material.stress_zz(strain[q], h);
-              fields[D](i)          = material.dissipation_rate(h);
+              const auto      i = history_dofs[quadrature_to_history_dof[q]];
+              fields[s_xx](i)   = sigma[0][0];
+              fields[s_yy](i)   = sigma[1][1];
+              fields[s_xy](i)   = sigma[0][1];
+              fields[s_zz](i)   = material.stress_zz(strain[q], h);
+              fields[D](i)      = material.dissipation_rate(h);
             }
         }
     for (auto &f : fields)
@@ -983,7 +1006,9 @@ namespace viscoslide
     surface_out.add_data_vector(solution, surface_fields);
     surface_out.build_patches(2);
     writer.write_pvtu(static_cast<const DataOutFaces<dim> &>(surface_out),
-                      "surface", step_number, committed.time);
+                      "surface",
+                      step_number,
+                      committed.time);
   }
 
 
@@ -993,23 +1018,23 @@ namespace viscoslide
     const std::string comment =
       version_string() + "; time unit: " + prm.material.time_constant +
       " time; forces per unit length in (pi dgamma^2 E0* R)^(1/3)";
-    approach_table = std::make_unique<CsvTable>(
-      writer.path("approach.csv"),
-      std::vector<std::string>{"step",
-                               "phase",
-                               "time_over_tau",
-                               "delta_hat",
-                               "F_n_hat",
-                               "F_t_hat",
-                               "L_hat",
-                               "min_gap_over_eps",
-                               "newton_iterations",
-                               "step_cuts",
-                               "jump",
-                               "n_dofs",
-                               "n_cells"},
-      comment,
-      mpi_communicator);
+    approach_table =
+      std::make_unique<CsvTable>(writer.path("approach.csv"),
+                                 std::vector<std::string>{"step",
+                                                          "phase",
+                                                          "time_over_tau",
+                                                          "delta_hat",
+                                                          "F_n_hat",
+                                                          "F_t_hat",
+                                                          "L_hat",
+                                                          "min_gap_over_eps",
+                                                          "newton_iterations",
+                                                          "step_cuts",
+                                                          "jump",
+                                                          "n_dofs",
+                                                          "n_cells"},
+                                 comment,
+                                 mpi_communicator);
 
     make_grid();
     setup_system();
@@ -1031,18 +1056,20 @@ namespace viscoslide
     };
 
     // The loading program: a list of (phase, target) steps.
-    const double inf = std::numeric_limits<double>::infinity();
-    const double v   = prm.loading.approach_speed;
+    const double inf  = std::numeric_limits<double>::infinity();
+    const double v    = prm.loading.approach_speed;
     auto         ramp = [&](const std::string &phase, const double to) {
-      const double from = committed.delta;
+      const double       from = committed.delta;
       const unsigned int n =
-        std::max(1., std::ceil(std::abs(to - from) / prm.loading.increment - 1e-9));
+        std::max(1.,
+                 std::ceil(std::abs(to - from) / prm.loading.increment - 1e-9));
       for (unsigned int k = 1; k <= n; ++k)
         {
           LoadState target = committed;
           target.delta     = from + (to - from) * k / n;
-          target.dt        = v > 0 ? std::abs(target.delta - committed.delta) / v : inf;
-          target.time      = committed.time + (v > 0 ? target.dt : 0.);
+          target.dt =
+            v > 0 ? std::abs(target.delta - committed.delta) / v : inf;
+          target.time = committed.time + (v > 0 ? target.dt : 0.);
           if (!advance_to(target, phase))
             fail(target);
         }
@@ -1056,14 +1083,15 @@ namespace viscoslide
     ramp("approach", prm.loading.final_approach);
     if (prm.loading.hold_time > 0)
       {
-        const double t0 = committed.time, T = prm.loading.hold_time;
-        const unsigned int n = prm.loading.hold_steps;
-        const double first   = std::min(1e-3, T / n);
+        const double       t0 = committed.time, T = prm.loading.hold_time;
+        const unsigned int n     = prm.loading.hold_steps;
+        const double       first = std::min(1e-3, T / n);
         for (unsigned int k = 1; k <= n; ++k)
           {
             LoadState target = committed;
             target.time =
-              t0 + (n == 1 ? T : first * std::pow(T / first, (k - 1.) / (n - 1.)));
+              t0 +
+              (n == 1 ? T : first * std::pow(T / first, (k - 1.) / (n - 1.)));
             target.dt = target.time - committed.time;
             if (!advance_to(target, "hold"))
               fail(target);

@@ -11,7 +11,8 @@ namespace viscoslide
     : dgamma(dgamma)
     , eps(eps)
     , repulsive_only(repulsive_only)
-  {}
+  {
+  }
 
   double
   LennardJones::raw_traction(const double g) const

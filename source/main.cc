@@ -62,8 +62,8 @@ main(int argc, char *argv[])
           const bool json = i + 1 < args.size() && args[i + 1] == "json";
           if (root)
             prm.print_parameters(std::cout,
-                                 json ? ParameterHandler::JSON :
-                                        ParameterHandler::PRM);
+                                 json ? ParameterHandler::JSON
+                                      : ParameterHandler::PRM);
           return 0;
         }
       if (args[i] == "--overwrite")
@@ -118,8 +118,7 @@ main(int argc, char *argv[])
   catch (std::exception &e)
     {
       if (root)
-        std::cerr << "viscoslide: error in parameter file '" << input
-                  << "':\n"
+        std::cerr << "viscoslide: error in parameter file '" << input << "':\n"
                   << e.what() << std::endl;
       return 1;
     }
@@ -135,7 +134,7 @@ main(int argc, char *argv[])
           std::ofstream json(dir + "parameters.json");
           prm.print_parameters(json, ParameterHandler::JSON);
           std::ofstream(dir + "version.txt") << version_string() << "\n";
-          std::cout << version_string() << ", " 
+          std::cout << version_string() << ", "
                     << Utilities::MPI::n_mpi_processes(comm)
                     << " MPI process(es)\n";
         }

@@ -35,7 +35,8 @@ namespace viscoslide
     , lambda1(lame_lambda(E1, nu))
     , C0(plane_strain_stiffness(lambda0, E0 / (2. * (1. + nu))))
     , C1(plane_strain_stiffness(lambda1, E1 / (2. * (1. + nu))))
-  {}
+  {
+  }
 
 
   StandardLinearSolid::StepFactors
@@ -52,9 +53,9 @@ namespace viscoslide
 
   ArmStress
   StandardLinearSolid::updated_arm_stress(
-    const ArmStress &            old_h,
+    const ArmStress             &old_h,
     const SymmetricTensor<2, 2> &strain_increment,
-    const StepFactors &          f) const
+    const StepFactors           &f) const
   {
     ArmStress h;
     h.in_plane = f.a * old_h.in_plane + f.gamma * (C1 * strain_increment);
@@ -65,7 +66,7 @@ namespace viscoslide
 
   SymmetricTensor<2, 2>
   StandardLinearSolid::stress(const SymmetricTensor<2, 2> &strain,
-                              const ArmStress &            h) const
+                              const ArmStress             &h) const
   {
     return C0 * strain + h.in_plane;
   }
@@ -73,7 +74,7 @@ namespace viscoslide
 
   double
   StandardLinearSolid::stress_zz(const SymmetricTensor<2, 2> &strain,
-                                 const ArmStress &            h) const
+                                 const ArmStress             &h) const
   {
     return lambda0 * trace(strain) + h.zz;
   }

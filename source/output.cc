@@ -12,17 +12,17 @@
 #include <sstream>
 
 #ifndef VISCOSLIDE_VERSION
-#  define VISCOSLIDE_VERSION "unknown"
+#define VISCOSLIDE_VERSION "unknown"
 #endif
 #ifndef VISCOSLIDE_GIT_REVISION
-#  define VISCOSLIDE_GIT_REVISION "unknown"
+#define VISCOSLIDE_GIT_REVISION "unknown"
 #endif
 
 namespace viscoslide
 {
-  CsvTable::CsvTable(const std::string &             filename,
+  CsvTable::CsvTable(const std::string              &filename,
                      const std::vector<std::string> &columns,
-                     const std::string &             comment,
+                     const std::string              &comment,
                      MPI_Comm                        comm)
     : n_columns(columns.size())
   {
@@ -65,7 +65,8 @@ namespace viscoslide
   OutputWriter::OutputWriter(const std::string &directory, MPI_Comm comm)
     : directory(directory)
     , comm(comm)
-  {}
+  {
+  }
 
   void
   OutputWriter::prepare_directory(const std::string &directory,

@@ -303,8 +303,9 @@ namespace viscoslide
       retract           = prm.get_bool("Retract");
       retract_to        = prm.get_double("Retract to");
       prm.leave_subsection();
-      require(increment > 0, entry("Loading", "Approach increment", increment) +
-                               " must be positive");
+      require(increment > 0,
+              entry("Loading", "Approach increment", increment) +
+                " must be positive");
       require(minimum_increment > 0 && minimum_increment <= increment,
               entry("Loading", "Minimum increment", minimum_increment) +
                 " must be positive and not above the Approach increment");
@@ -370,8 +371,7 @@ namespace viscoslide
               entry("Mesh", "Finest surface cell", finest_cell) +
                 " must be positive");
       require(grading > 0 && grading <= 2,
-              entry("Mesh", "Mesh grading", grading) +
-                " must be in (0, 2]");
+              entry("Mesh", "Mesh grading", grading) + " must be in (0, 2]");
       require(edge_gap_high > edge_gap_low,
               entry("Mesh", "Edge gap upper", edge_gap_high) +
                 " must exceed Edge gap lower");
@@ -487,9 +487,9 @@ namespace viscoslide
                        p.adhesion.R_over_eps))
     , sigma_max(16. * dgamma / (9. * std::sqrt(3.) * eps))
     , force(std::cbrt(M_PI * dgamma * dgamma * E0_star * R))
-    , tau_arm(p.material.time_constant == "relaxation" ?
-                1. :
-                p.material.E0_over_Einf)
+    , tau_arm(
+        p.material.time_constant == "relaxation" ? 1. : p.material.E0_over_Einf)
     , tau_ref(1.)
-  {}
+  {
+  }
 } // namespace viscoslide

@@ -21,9 +21,9 @@ namespace viscoslide
 
     template <typename Function>
     void
-    for_each_top_face(const DoFHandler<2> &    dof_handler,
+    for_each_top_face(const DoFHandler<2>     &dof_handler,
                       const types::boundary_id top,
-                      const Function &         f)
+                      const Function          &f)
     {
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -36,9 +36,9 @@ namespace viscoslide
 
 
   SurfacePostprocessor::SurfacePostprocessor(const InteractionLaw &law,
-                                             const Indenter &      indenter,
+                                             const Indenter       &indenter,
                                              const double          eps,
-                                             const double       contact_gap,
+                                             const double          contact_gap,
                                              const unsigned int n_face_points,
                                              const types::boundary_id top)
     : law(law)
@@ -47,14 +47,15 @@ namespace viscoslide
     , contact_gap(contact_gap)
     , n_face_points(n_face_points)
     , top(top)
-  {}
+  {
+  }
 
 
   SurfaceQuantities
-  SurfacePostprocessor::integrate(const DoFHandler<2> &                dofs,
+  SurfacePostprocessor::integrate(const DoFHandler<2>                 &dofs,
                                   const TrilinosWrappers::MPI::Vector &u,
-                                  const double delta,
-                                  const double s) const
+                                  const double                         delta,
+                                  const double                         s) const
   {
     const FEValuesExtractors::Scalar uy(1);
     const QGauss<1>                  gauss(n_face_points);
@@ -63,12 +64,12 @@ namespace viscoslide
                                  update_values | update_gradients |
                                    update_quadrature_points |
                                    update_JxW_values);
-    const Quadrature<1> sampling = sampling_points(4 * n_face_points);
-    FEFaceValues<2>     sample_values(dofs.get_fe(),
+    const Quadrature<1>       sampling = sampling_points(4 * n_face_points);
+    FEFaceValues<2>           sample_values(dofs.get_fe(),
                                   sampling,
                                   update_values | update_quadrature_points);
-    std::vector<double>         u_y(gauss.size()), s_u_y(sampling.size());
-    std::vector<Tensor<1, 2>>   grad_u_y(gauss.size());
+    std::vector<double>       u_y(gauss.size()), s_u_y(sampling.size());
+    std::vector<Tensor<1, 2>> grad_u_y(gauss.size());
     std::vector<std::pair<double, double>> samples(sampling.size());
 
     double Fn = 0, Ft = 0, L = 0, F_abs = 0,
@@ -125,7 +126,7 @@ namespace viscoslide
 
 
   std::vector<ProfilePoint>
-  SurfacePostprocessor::profile(const DoFHandler<2> &                dofs,
+  SurfacePostprocessor::profile(const DoFHandler<2>                 &dofs,
                                 const TrilinosWrappers::MPI::Vector &u,
                                 const double                         delta,
                                 const double                         s) const
@@ -170,19 +171,19 @@ namespace viscoslide
 
   std::vector<std::pair<double, double>>
   SurfacePostprocessor::faces_in_gap_band(
-    const DoFHandler<2> &                dofs,
+    const DoFHandler<2>                 &dofs,
     const TrilinosWrappers::MPI::Vector &u,
     const double                         delta,
     const double                         s,
     const double                         g_lo,
     const double                         g_hi) const
   {
-    const FEValuesExtractors::Scalar uy(1);
-    const Quadrature<1>              sampling = sampling_points(4);
-    FEFaceValues<2>                  values(dofs.get_fe(),
+    const FEValuesExtractors::Scalar       uy(1);
+    const Quadrature<1>                    sampling = sampling_points(4);
+    FEFaceValues<2>                        values(dofs.get_fe(),
                            sampling,
                            update_values | update_quadrature_points);
-    std::vector<double>              u_y(sampling.size());
+    std::vector<double>                    u_y(sampling.size());
     std::vector<std::pair<double, double>> intervals;
     for_each_top_face(dofs, top, [&](const auto &cell, const unsigned int f) {
       values.reinit(cell, f);

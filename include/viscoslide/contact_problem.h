@@ -121,10 +121,10 @@ namespace viscoslide
     const std::unique_ptr<Indenter>       indenter;
 
     parallel::distributed::Triangulation<dim> triangulation;
-    const FESystem<dim>                        fe;
-    DoFHandler<dim>                            dof_handler;
-    const QGauss<dim>                          quadrature;
-    const QGauss<dim - 1>                      face_quadrature;
+    const FESystem<dim>                       fe;
+    DoFHandler<dim>                           dof_handler;
+    const QGauss<dim>                         quadrature;
+    const QGauss<dim - 1>                     face_quadrature;
 
     // The history lives in a discontinuous field whose nodes are the Gauss
     // points of `quadrature`, so that SolutionTransfer carries it through
@@ -157,7 +157,7 @@ namespace viscoslide
     // Residual scale of the last assembly: total |surface traction| force.
     double traction_scale;
 
-    SurfacePostprocessor postprocessor;
+    SurfacePostprocessor      postprocessor;
     OutputWriter              writer;
     std::unique_ptr<CsvTable> approach_table;
 

@@ -24,7 +24,8 @@ namespace viscoslide
   public:
     explicit ParabolicIndenter(const double R)
       : R(R)
-    {}
+    {
+    }
 
     double
     profile(const double xi) const override

@@ -38,9 +38,9 @@ namespace viscoslide
     step_factors(double dt) const;
 
     ArmStress
-    updated_arm_stress(const ArmStress &           old_h,
+    updated_arm_stress(const ArmStress             &old_h,
                        const SymmetricTensor<2, 2> &strain_increment,
-                       const StepFactors &          factors) const;
+                       const StepFactors           &factors) const;
 
     SymmetricTensor<2, 2>
     stress(const SymmetricTensor<2, 2> &strain, const ArmStress &h) const;

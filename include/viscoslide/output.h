@@ -23,9 +23,9 @@ namespace viscoslide
   class CsvTable
   {
   public:
-    CsvTable(const std::string &             filename,
+    CsvTable(const std::string              &filename,
              const std::vector<std::string> &columns,
-             const std::string &             comment,
+             const std::string              &comment,
              MPI_Comm                        comm);
 
     // Numbers are written with 12 significant digits.

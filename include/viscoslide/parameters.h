@@ -154,7 +154,8 @@ namespace viscoslide
     public:
       explicit ExcInvalidInput(const std::string &message)
         : std::runtime_error(message)
-      {}
+      {
+      }
     };
   } // namespace Parameters
 
@@ -167,15 +168,15 @@ namespace viscoslide
   {
     explicit Scales(const Parameters::AllParameters &p);
 
-    double eps;            // interaction range (= 1)
-    double R;              // indenter radius, R_hat eps
-    double E0_star;        // plane-strain relaxed modulus (= 1)
-    double Einf_star;      // plane-strain instantaneous modulus
-    double dgamma;         // work of adhesion, sqrt(muT^3/R_hat) E0* eps
-    double sigma_max;      // Lennard-Jones peak traction
-    double force;          // (pi dgamma^2 E0* R)^(1/3), the F_hat unit
-    double tau_arm;        // relaxation time of the Maxwell arm
-    double tau_ref;        // the time unit of V_hat and time_over_tau (= 1)
+    double eps;       // interaction range (= 1)
+    double R;         // indenter radius, R_hat eps
+    double E0_star;   // plane-strain relaxed modulus (= 1)
+    double Einf_star; // plane-strain instantaneous modulus
+    double dgamma;    // work of adhesion, sqrt(muT^3/R_hat) E0* eps
+    double sigma_max; // Lennard-Jones peak traction
+    double force;     // (pi dgamma^2 E0* R)^(1/3), the F_hat unit
+    double tau_arm;   // relaxation time of the Maxwell arm
+    double tau_ref;   // the time unit of V_hat and time_over_tau (= 1)
   };
 } // namespace viscoslide
 

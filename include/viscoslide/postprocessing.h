@@ -47,14 +47,14 @@ namespace viscoslide
   {
   public:
     SurfacePostprocessor(const InteractionLaw &law,
-                         const Indenter &      indenter,
+                         const Indenter       &indenter,
                          double                eps,
                          double                contact_gap,
                          unsigned int          face_quadrature_points,
                          types::boundary_id    top_boundary);
 
     SurfaceQuantities
-    integrate(const DoFHandler<2> &                dof_handler,
+    integrate(const DoFHandler<2>                 &dof_handler,
               const TrilinosWrappers::MPI::Vector &solution,
               double                               delta,
               double                               s) const;
@@ -62,7 +62,7 @@ namespace viscoslide
     // Points along the whole top surface, sorted by x, complete on rank 0
     // (empty elsewhere).
     std::vector<ProfilePoint>
-    profile(const DoFHandler<2> &                dof_handler,
+    profile(const DoFHandler<2>                 &dof_handler,
             const TrilinosWrappers::MPI::Vector &solution,
             double                               delta,
             double                               s) const;
@@ -70,7 +70,7 @@ namespace viscoslide
     // x-intervals of the top faces whose gap range overlaps [g_lo, g_hi],
     // gathered from all processes: the contact edges the mesh follows.
     std::vector<std::pair<double, double>>
-    faces_in_gap_band(const DoFHandler<2> &                dof_handler,
+    faces_in_gap_band(const DoFHandler<2>                 &dof_handler,
                       const TrilinosWrappers::MPI::Vector &solution,
                       double                               delta,
                       double                               s,
@@ -78,8 +78,8 @@ namespace viscoslide
                       double                               g_hi) const;
 
   private:
-    const InteractionLaw &   law;
-    const Indenter &         indenter;
+    const InteractionLaw    &law;
+    const Indenter          &indenter;
     const double             eps;
     const double             contact_gap;
     const unsigned int       n_face_points;

@@ -236,6 +236,9 @@ namespace viscoslide
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
     sp.compress();
+    // The solver objects refer to the old matrix: release them first.
+    direct_solver.reset();
+    amg.reset();
     system_matrix.reinit(sp);
 
     solution.reinit(locally_owned_dofs,
@@ -244,6 +247,7 @@ namespace viscoslide
     old_solution.reinit(solution);
     last_increment.reinit(solution);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    delta_coupling.reinit(system_rhs);
     newton_update.reinit(system_rhs);
     for (auto &h : history)
       h.reinit(history_dof_handler.locally_owned_dofs(), mpi_communicator);
@@ -296,6 +300,9 @@ namespace viscoslide
     if (with_matrix)
       system_matrix = 0;
     system_rhs = 0;
+    if (force_control)
+      delta_coupling = 0;
+    double force = 0., delta_stiff = 0.;
 
     FEValues<dim>                    fe_values(fe,
                             quadrature,
@@ -310,7 +317,7 @@ namespace viscoslide
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     const unsigned int n_q           = quadrature.size();
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    Vector<double>     cell_rhs(dofs_per_cell);
+    Vector<double>     cell_rhs(dofs_per_cell), cell_coupling(dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<types::global_dof_index> history_dofs(
       history_fe.n_dofs_per_cell());
@@ -328,8 +335,9 @@ namespace viscoslide
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_matrix = 0;
-          cell_rhs    = 0;
+          cell_matrix   = 0;
+          cell_rhs      = 0;
+          cell_coupling = 0;
           fe_values.reinit(cell);
           fe_values[displacement].get_function_symmetric_gradients(solution,
                                                                    strain);
@@ -386,9 +394,12 @@ namespace viscoslide
                                          face_values.quadrature_point(q)[0],
                                          u_y[q]);
                     double       traction  = law->traction(g);
-                    double       stiffness = law->derivative(g);
+                    const double dp_dg     = law->derivative(g);
+                    double       stiffness = dp_dg;
                     const double JxW       = face_values.JxW(q);
                     abs_force += std::abs(traction) * JxW;
+                    force -= traction * JxW;
+                    delta_stiff += dp_dg * JxW;
                     if (surface_damping > 0)
                       {
                         traction -= surface_damping * (u_y[q] - anchor_u_y[q]);
@@ -399,6 +410,7 @@ namespace viscoslide
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       {
                         cell_rhs(i) += traction * phi_y[i] * JxW;
+                        cell_coupling(i) += dp_dg * phi_y[i] * JxW;
                         if (with_matrix)
                           for (unsigned int j = 0; j < dofs_per_cell; ++j)
                             cell_matrix(i, j) +=
@@ -408,6 +420,10 @@ namespace viscoslide
               }
 
           cell->get_dof_indices(local_dofs);
+          if (force_control)
+            constraints.distribute_local_to_global(cell_coupling,
+                                                   local_dofs,
+                                                   delta_coupling);
           if (with_matrix)
             constraints.distribute_local_to_global(
               cell_matrix, cell_rhs, local_dofs, system_matrix, system_rhs);
@@ -420,30 +436,37 @@ namespace viscoslide
       system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     traction_scale = Utilities::MPI::sum(abs_force, mpi_communicator);
+    if (force_control)
+      {
+        delta_coupling.compress(VectorOperation::add);
+        force_mismatch =
+          Utilities::MPI::sum(force, mpi_communicator) - target_force;
+        delta_stiffness = Utilities::MPI::sum(delta_stiff, mpi_communicator);
+      }
   }
 
 
   void
-  ContactProblem::solve_linear_system()
+  ContactProblem::prepare_linear_solver()
   {
     TimerOutput::Scope t(timer, "linear solve");
     const bool         direct =
       prm.solver.linear_solver == "direct" ||
       (prm.solver.linear_solver == "automatic" &&
        dof_handler.n_dofs() <= prm.solver.direct_solver_limit);
-    TrilinosWrappers::MPI::Vector du(locally_owned_dofs, mpi_communicator);
+    direct_solver.reset();
+    amg.reset();
     if (direct)
       {
-        SolverControl                                  control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                            "Amesos_Mumps");
-        TrilinosWrappers::SolverDirect                 solver(control, data);
-        solver.solve(system_matrix, du, system_rhs);
+        static SolverControl control(1, 0);
+        direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
+        direct_solver->initialize(system_matrix);
       }
     else
       {
-        // The tangent is indefinite where p_LJ' < 0, so GMRES, not CG.
-        TrilinosWrappers::PreconditionAMG                 amg;
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         std::vector<std::vector<bool>>                    modes;
         DoFTools::extract_constant_modes(dof_handler,
@@ -454,15 +477,61 @@ namespace viscoslide
         data.higher_order_elements = true;
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
-        amg.initialize(system_matrix, data);
-        SolverControl control(2000, 1e-10 * system_rhs.l2_norm());
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(system_matrix, data);
+      }
+  }
+
+
+  void
+  ContactProblem::solve(const TrilinosWrappers::MPI::Vector &rhs,
+                        TrilinosWrappers::MPI::Vector &      x)
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    x.reinit(locally_owned_dofs, mpi_communicator);
+    if (direct_solver)
+      direct_solver->solve(x, rhs);
+    else
+      {
+        // The tangent is indefinite where p_LJ' < 0, so GMRES, not CG.
+        SolverControl control(2000, 1e-10 * rhs.l2_norm());
         SolverGMRES<TrilinosWrappers::MPI::Vector> solver(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
-        solver.solve(system_matrix, du, system_rhs, amg);
+        solver.solve(system_matrix, x, rhs, *amg);
       }
-    constraints.distribute(du);
-    newton_update = du;
+    constraints.distribute(x);
+  }
+
+
+  // Under force control the bordered system
+  //   [K   b] [du    ]   [-R]
+  //   [b^T d] [ddelta] = [-G],   G = Fn - target,
+  // is solved with one factorization of K and two solves.
+  void
+  ContactProblem::solve_newton_system()
+  {
+    prepare_linear_solver();
+    TrilinosWrappers::MPI::Vector x1;
+    solve(system_rhs, x1);
+    delta_update = 0.;
+    if (force_control)
+      {
+        TrilinosWrappers::MPI::Vector x2;
+        solve(delta_coupling, x2);
+        delta_update = (-force_mismatch - (delta_coupling * x1)) /
+                       (delta_stiffness - (delta_coupling * x2));
+        x1.add(-delta_update, x2);
+      }
+    newton_update = x1;
+  }
+
+
+  double
+  ContactProblem::residual_norm() const
+  {
+    const double r = system_rhs.l2_norm();
+    return force_control ? std::hypot(r, force_mismatch) : r;
   }
 
 
@@ -481,7 +550,7 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
 
     assemble(true, surface_damping);
-    double residual = system_rhs.l2_norm();
+    double residual = residual_norm();
     for (unsigned int it = 0; it <= max_iterations; ++it)
       {
         if (!std::isfinite(residual))
@@ -500,7 +569,7 @@ namespace viscoslide
         if (it == max_iterations)
           break;
 
-        solve_linear_system();
+        solve_newton_system();
         if (!std::isfinite(newton_update.l2_norm()))
           {
             pcout << "      Newton: linear solve gave a non-finite update at "
@@ -511,16 +580,18 @@ namespace viscoslide
 
         // Backtracking on the residual norm; accept the first step that
         // reduces it, else give up (the caller cuts the step).
-        u0             = solution;
-        double alpha   = 1.;
+        u0                  = solution;
+        const double delta0 = current.delta;
+        double       alpha  = 1.;
         bool   reduced = false;
         for (unsigned int k = 0; k < (prm.solver.line_search ? 8 : 1); ++k)
           {
             TrilinosWrappers::MPI::Vector trial(u0);
             trial.add(alpha, newton_update);
-            solution = trial;
+            solution      = trial;
+            current.delta = delta0 + alpha * delta_update;
             assemble(false, surface_damping);
-            const double r = system_rhs.l2_norm();
+            const double r = residual_norm();
             if (std::isfinite(r) &&
                 (r < (1. - 1e-4 * alpha) * residual || !prm.solver.line_search))
               {
@@ -534,7 +605,7 @@ namespace viscoslide
         if (!reduced)
           return -1;
         assemble(true, surface_damping);
-        residual = system_rhs.l2_norm();
+        residual = residual_norm();
       }
     return -1;
   }
@@ -561,26 +632,29 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
 
     assemble(false, 0.);
-    double residual = system_rhs.l2_norm();
+    double residual = residual_norm();
     for (unsigned int k = 0; k < prm.solver.max_relaxation_steps; ++k)
       {
         if (residual <= prm.solver.newton_tolerance * (traction_scale + floor))
           return k;
         relaxation_anchor = solution; // the dashpot term vanishes at u
         assemble(true, c);
-        solve_linear_system();
-        u0 = solution;
+        solve_newton_system();
+        u0                  = solution;
+        const double delta0 = current.delta;
         TrilinosWrappers::MPI::Vector trial(u0);
         trial.add(1., newton_update);
-        solution = trial;
+        solution      = trial;
+        current.delta = delta0 + delta_update;
         assemble(false, 0.);
-        const double r = system_rhs.l2_norm();
+        const double r = residual_norm();
         if (prm.solver.verbose)
           pcout << "      relaxation " << k << ": residual " << r
                 << ", dashpot " << c << std::endl;
         if (!std::isfinite(r))
           {
-            solution = u0;
+            solution      = u0;
+            current.delta = delta0;
             c *= 4.;
             if (c > 1e10 * c0)
               return -1;
@@ -626,9 +700,11 @@ namespace viscoslide
         // Along a smooth branch the secant predictor saves most of the
         // Newton iterations; if it does not help, start from the last state.
         const double ratio =
-          last_increment_delta != 0.
-            ? (trial.delta - committed.delta) / last_increment_delta
-            : 0.;
+          (trial.s != committed.s && last_increment_s != 0.) ?
+            (trial.s - committed.s) / last_increment_s :
+            (last_increment_delta != 0. ?
+               (trial.delta - committed.delta) / last_increment_delta :
+               0.);
         if (ratio != 0. && std::abs(ratio) <= 4.)
           {
             TrilinosWrappers::MPI::Vector predicted(locally_owned_dofs,
@@ -639,7 +715,10 @@ namespace viscoslide
             increment = last_increment;
             predicted.add(ratio, increment);
             solution = predicted;
-            its      = solve_newton(trial);
+            LoadState predicted_state = trial;
+            if (force_control)
+              predicted_state.delta += ratio * last_increment_delta;
+            its = solve_newton(predicted_state);
             if (its < 0)
               solution = backup;
           }
@@ -648,7 +727,10 @@ namespace viscoslide
         if (its < 0)
           {
             solution = backup;
-            if (fraction * span > prm.loading.minimum_increment * 1.0001)
+            // Steps that do not change delta (hold, sliding) are cut to 1/64.
+            if (span > 0 ?
+                  fraction * span > prm.loading.minimum_increment * 1.0001 :
+                  fraction > 1. / 64.)
               {
                 fraction *= 0.5;
                 ++cuts;
@@ -666,9 +748,11 @@ namespace viscoslide
           {
             if (!adapt_mesh())
               break;
-            int more = solve_newton(trial);
+            const LoadState converged = current; // under force control
+                                                 // delta is part of it
+            int more = solve_newton(converged);
             if (more < 0)
-              more = relax_to_equilibrium(trial);
+              more = relax_to_equilibrium(converged);
             if (more < 0)
               return false;
             its += more;
@@ -740,6 +824,7 @@ namespace viscoslide
     increment -= old;
     last_increment       = increment;
     last_increment_delta = current.delta - committed.delta;
+    last_increment_s     = current.s - committed.s;
     old_solution         = solution;
     committed            = current;
   }
@@ -861,11 +946,33 @@ namespace viscoslide
   ContactProblem::record_step(const std::string &phase)
   {
     TimerOutput::Scope t(timer, "postprocessing");
-    const auto         sq = postprocessor.integrate(dof_handler,
+    const auto sq = postprocessor.integrate(dof_handler,
                                             solution,
                                             committed.delta,
                                             committed.s);
+    last_quantities       = sq;
+    last_dissipation_rate = total_dissipation_rate();
     using F               = CsvTable;
+    if (phase == "slide")
+      {
+        const double V    = prm.sliding.speed * scales.eps / scales.tau_ref;
+        const double rate = last_dissipation_rate * scales.tau_ref /
+                            (scales.force * scales.eps);
+        history_table->add_row(
+          {F::format(committed.time / scales.tau_ref),
+           F::format(committed.s / scales.eps),
+           F::format(committed.delta / scales.eps),
+           F::format(sq.normal_force / scales.force),
+           F::format(sq.tangential_force / scales.force),
+           F::format(sq.profile_force / scales.force),
+           F::format(std::abs(sq.tangential_force / sq.normal_force)),
+           F::format(sq.contact_length / scales.R),
+           F::format(rate),
+           F::format(std::abs(last_dissipation_rate / V / sq.normal_force)),
+           std::to_string(last_newton_iterations),
+           std::to_string(dof_handler.n_dofs())});
+      }
+    else
     approach_table->add_row(
       {std::to_string(step_number),
        phase,
@@ -1013,6 +1120,199 @@ namespace viscoslide
 
 
   void
+  ContactProblem::abort_run(const LoadState &target)
+  {
+    write_profile("surface_profile_last_converged.csv");
+    throw std::runtime_error(
+      "Newton failed at step " + std::to_string(step_number) +
+      " (delta_hat = " + std::to_string(target.delta) +
+      ", s_over_eps = " + std::to_string(target.s) +
+      ", time_over_tau = " + std::to_string(target.time) +
+      ") even after cutting the step and relaxing to a new branch; the "
+      "last converged surface profile is in "
+      "surface_profile_last_converged.csv");
+  }
+
+
+  // integral of D dA at the committed state.
+  double
+  ContactProblem::total_dissipation_rate() const
+  {
+    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
+    std::vector<types::global_dof_index> history_dofs(
+      history_fe.n_dofs_per_cell());
+    std::vector<double> values;
+    double              rate = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          const DoFHandler<dim>::active_cell_iterator history_cell(
+            &triangulation, cell->level(), cell->index(), &history_dof_handler);
+          read_history(history_cell,
+                       quadrature_to_history_dof,
+                       history,
+                       values,
+                       history_dofs);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            rate += material.dissipation_rate(arm_stress_at(values, q)) *
+                    fe_values.JxW(q);
+        }
+    return Utilities::MPI::sum(rate, mpi_communicator);
+  }
+
+
+  // Phase 2 of the paper: the profile h(x - s) moves with s = V t over the
+  // fixed surface until Fn (or delta), Ft and L are steady over a window.
+  void
+  ContactProblem::slide()
+  {
+    const double V     = prm.sliding.speed * scales.eps / scales.tau_ref;
+    const double h_min = prm.mesh.finest_cell;
+    const double L0    = std::max(last_quantities.contact_length, 10. * h_min);
+    const double tau_c = scales.tau_arm / prm.material.E0_over_Einf;
+    const double distance = prm.sliding.max_distance > 0 ?
+                              prm.sliding.max_distance :
+                              4. * L0 + 30. * V * tau_c;
+    const double window   = prm.sliding.steady_window > 0 ?
+                              prm.sliding.steady_window :
+                              std::max(L0, 2. * V * tau_c);
+    if (committed.s + distance + 2. * L0 > prm.geometry.domain_width / 2)
+      throw Parameters::ExcInvalidInput(
+        "'Geometry/Domain width' = " +
+        std::to_string(prm.geometry.domain_width) + " is too small to slide " +
+        std::to_string(distance) + " eps and stay 2 L = " +
+        std::to_string(2 * L0) +
+        " eps away from the lateral boundary; it must be at least " +
+        std::to_string(2 * (committed.s + distance + 2 * L0)) +
+        " (or set 'Sliding/Maximum sliding distance')");
+
+    force_control   = prm.sliding.control == "force";
+    target_force    = last_quantities.normal_force;
+    const double ds = prm.sliding.increment * h_min;
+    const double dt = ds / V;
+    const double s0 = committed.s;
+    pcout << "Sliding at V_hat = " << prm.sliding.speed << " under "
+          << prm.sliding.control << " control: up to " << distance
+          << " eps in steps of " << ds << " eps, steady over " << window
+          << " eps" << std::endl;
+
+    history_table = std::make_unique<CsvTable>(
+      writer.path("history.csv"),
+      std::vector<std::string>{"time_over_tau",
+                               "s_over_eps",
+                               "delta_hat",
+                               "F_n_hat",
+                               "F_t_hat",
+                               "F_t_profile_hat",
+                               "mu",
+                               "L_hat",
+                               "dissipation_rate_hat",
+                               "mu_energy",
+                               "newton_iterations",
+                               "n_dofs"},
+      version_string() + "; time unit: " + prm.material.time_constant +
+        " time",
+      mpi_communicator);
+
+    // Steady state: over the last `window` of sliding, the controlled
+    // quantity's conjugate (Fn or delta), Ft and L each vary by less than
+    // the tolerance relative to their size (or a floor for small values).
+    struct Sample
+    {
+      double s, value[3];
+    };
+    std::vector<Sample> samples;
+    bool                steady = false;
+    while (committed.s - s0 < distance - 1e-9 * ds && !steady)
+      {
+        LoadState target = committed;
+        target.s += ds;
+        target.time += dt;
+        target.dt = dt;
+        if (!advance_to(target, "slide"))
+          abort_run(target);
+        const auto &q = last_quantities;
+        samples.push_back(
+          {committed.s,
+           {force_control ? committed.delta : q.normal_force,
+            q.tangential_force,
+            q.contact_length}});
+        if (committed.s - s0 < window + L0)
+          continue;
+        const double floor[3] = {force_control ? scales.eps :
+                                                 1e-3 * scales.force,
+                                 1e-3 * std::abs(q.normal_force) +
+                                   1e-6 * scales.force,
+                                 h_min};
+        steady = true;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            double lo = 1e300, hi = -1e300, size = floor[k];
+            for (auto it = samples.rbegin();
+                 it != samples.rend() && it->s >= committed.s - window;
+                 ++it)
+              {
+                lo   = std::min(lo, it->value[k]);
+                hi   = std::max(hi, it->value[k]);
+                size = std::max(size, std::abs(it->value[k]));
+              }
+            steady = steady && hi - lo <= prm.sliding.steady_tolerance * size;
+          }
+      }
+
+    const auto & q        = last_quantities;
+    const double Fn       = q.normal_force, Ft = q.tangential_force;
+    const double F_energy = last_dissipation_rate / V;
+    using F               = CsvTable;
+    CsvTable table(writer.path("steady_state.csv"),
+                   {"control",
+                    "mu_T",
+                    "R_hat",
+                    "t_hat",
+                    "V_hat",
+                    "delta_hat",
+                    "F_n_hat",
+                    "F_t_hat",
+                    "F_t_profile_hat",
+                    "mu",
+                    "mu_energy",
+                    "L_hat",
+                    "dissipation_rate_hat",
+                    "steady",
+                    "sliding_distance_over_eps",
+                    "time_constant"},
+                   version_string(),
+                   mpi_communicator);
+    table.add_row({prm.sliding.control,
+                   F::format(prm.adhesion.tabor_parameter),
+                   F::format(prm.adhesion.R_over_eps),
+                   prm.geometry.substrate == "layer" ?
+                     F::format(prm.geometry.layer_thickness) :
+                     std::string("half-plane"),
+                   F::format(prm.sliding.speed),
+                   F::format(committed.delta / scales.eps),
+                   F::format(Fn / scales.force),
+                   F::format(Ft / scales.force),
+                   F::format(q.profile_force / scales.force),
+                   F::format(std::abs(Ft / Fn)),
+                   F::format(std::abs(F_energy / Fn)),
+                   F::format(q.contact_length / scales.R),
+                   F::format(last_dissipation_rate * scales.tau_ref /
+                             (scales.force * scales.eps)),
+                   steady ? "1" : "0",
+                   F::format(committed.s - s0),
+                   prm.material.time_constant});
+    write_profile("surface_profile_steady.csv");
+    pcout << (steady ? "Steady state" : "NO steady state") << " after "
+          << committed.s - s0 << " eps: mu = " << std::abs(Ft / Fn)
+          << ", mu_energy = " << std::abs(F_energy / Fn)
+          << ", L_hat = " << q.contact_length / scales.R << std::endl;
+    force_control = false;
+  }
+
+
+  void
   ContactProblem::run()
   {
     const std::string comment =
@@ -1044,16 +1344,7 @@ namespace viscoslide
     pcout << "Initial mesh: " << triangulation.n_global_active_cells()
           << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
 
-    auto fail = [&](const LoadState &target) {
-      write_profile("surface_profile_last_converged.csv");
-      throw std::runtime_error(
-        "Newton failed at step " + std::to_string(step_number) +
-        " (delta_hat = " + std::to_string(target.delta) +
-        ", time_over_tau = " + std::to_string(target.time) +
-        ") even after cutting the step to 'Loading/Minimum increment' and "
-        "relaxing to a new branch; the last converged surface profile is "
-        "in surface_profile_last_converged.csv");
-    };
+    auto fail = [&](const LoadState &target) { abort_run(target); };
 
     // The loading program: a list of (phase, target) steps.
     const double inf  = std::numeric_limits<double>::infinity();
@@ -1097,6 +1388,8 @@ namespace viscoslide
               fail(target);
           }
       }
+    if (prm.sliding.speed > 0)
+      slide();
     if (prm.loading.retract)
       ramp("retract", prm.loading.retract_to);
 

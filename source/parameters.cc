@@ -379,6 +379,81 @@ namespace viscoslide
 
 
     void
+    Sliding::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sliding");
+      prm.declare_entry("Sliding speed",
+                        "0",
+                        Patterns::Double(),
+                        "V_hat = V tau/eps of the sliding phase that follows "
+                        "the approach (and hold); the indenter profile moves "
+                        "towards +x over the fixed surface. 0: no sliding.");
+      prm.declare_entry("Control",
+                        "displacement",
+                        Patterns::Selection("displacement|force"),
+                        "'displacement': delta stays at its value after the "
+                        "approach and Fn is an output. 'force': Fn stays at "
+                        "the value reached at the end of the approach and "
+                        "delta is an unknown solved with the displacements.");
+      prm.declare_entry("Sliding increment",
+                        "1",
+                        Patterns::Double(),
+                        "Sliding distance per time step, in finest surface "
+                        "cells (Mesh/Finest surface cell); dt = increment/V.");
+      prm.declare_entry("Maximum sliding distance",
+                        "0",
+                        Patterns::Double(),
+                        "Stop sliding after this distance (in eps) even "
+                        "without steady state (then steady = 0). 0: "
+                        "automatic, 4 L + 30 V tau_c with L the contact "
+                        "length after the approach and tau_c the retardation "
+                        "time; refused if the indenter would come closer "
+                        "than 2 L to the lateral boundary.");
+      prm.declare_entry("Steady-state tolerance",
+                        "1e-3",
+                        Patterns::Double(),
+                        "Steady state: over the last Steady-state window of "
+                        "sliding, Fn (or delta), Ft and L_hat each vary by "
+                        "less than this, relative to their magnitude (Ft: "
+                        "to max(|Ft|, 1e-3 |Fn|)).");
+      prm.declare_entry("Steady-state window",
+                        "0",
+                        Patterns::Double(),
+                        "Sliding distance (eps) over which steady state is "
+                        "judged. 0: automatic, max(L, 2 V tau_c).");
+      prm.leave_subsection();
+    }
+
+    void
+    Sliding::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sliding");
+      speed            = prm.get_double("Sliding speed");
+      control          = prm.get("Control");
+      increment        = prm.get_double("Sliding increment");
+      max_distance     = prm.get_double("Maximum sliding distance");
+      steady_tolerance = prm.get_double("Steady-state tolerance");
+      steady_window    = prm.get_double("Steady-state window");
+      prm.leave_subsection();
+      require(speed >= 0 && std::isfinite(speed),
+              entry("Sliding", "Sliding speed", speed) +
+                " must not be negative");
+      require(increment > 0,
+              entry("Sliding", "Sliding increment", increment) +
+                " must be positive");
+      require(max_distance >= 0,
+              entry("Sliding", "Maximum sliding distance", max_distance) +
+                " must not be negative");
+      require(steady_tolerance > 0,
+              entry("Sliding", "Steady-state tolerance", steady_tolerance) +
+                " must be positive");
+      require(steady_window >= 0,
+              entry("Sliding", "Steady-state window", steady_window) +
+                " must not be negative");
+    }
+
+
+    void
     Solver::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
@@ -447,6 +522,7 @@ namespace viscoslide
       Geometry::declare(prm);
       Loading::declare(prm);
       Mesh::declare(prm);
+      Sliding::declare(prm);
       Solver::declare(prm);
     }
 
@@ -459,6 +535,7 @@ namespace viscoslide
       geometry.parse(prm);
       loading.parse(prm);
       mesh.parse(prm);
+      sliding.parse(prm);
       solver.parse(prm);
       check_consistency();
     }

@@ -72,7 +72,7 @@ namespace viscoslide
     std::vector<Tensor<1, 2>> grad_u_y(gauss.size());
     std::vector<std::pair<double, double>> samples(sampling.size());
 
-    double Fn = 0, Ft = 0, L = 0, F_abs = 0,
+    double Fn = 0, Ft = 0, Fh = 0, L = 0, F_abs = 0,
            g_min = std::numeric_limits<double>::max();
     for_each_top_face(dofs, top, [&](const auto &cell, const unsigned int f) {
       gauss_values.reinit(cell, f);
@@ -88,6 +88,7 @@ namespace viscoslide
           F_abs += std::abs(p) * w;
           if (g < contact_gap)
             Ft += p * grad_u_y[q][0] * w;
+          Fh += p * indenter.slope(x - s) * w;
         }
 
       sample_values.reinit(cell, f);
@@ -119,6 +120,7 @@ namespace viscoslide
     const MPI_Comm comm = dofs.get_communicator();
     return {Utilities::MPI::sum(Fn, comm),
             Utilities::MPI::sum(Ft, comm),
+            Utilities::MPI::sum(Fh, comm),
             Utilities::MPI::sum(L, comm),
             Utilities::MPI::sum(F_abs, comm),
             Utilities::MPI::min(g_min, comm)};

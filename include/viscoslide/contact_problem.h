@@ -18,6 +18,8 @@
 #include <deal.II/fe/fe_system.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -76,8 +78,19 @@ namespace viscoslide
     setup_system();
     void
     assemble(bool with_matrix, double surface_damping);
+    // Factorizes (direct) or preconditions (iterative) system_matrix once;
+    // solve() may then be called for several right-hand sides.
     void
-    solve_linear_system();
+    prepare_linear_solver();
+    void
+    solve(const TrilinosWrappers::MPI::Vector &rhs,
+          TrilinosWrappers::MPI::Vector &      x);
+    // The Newton update (newton_update, and delta_update under force
+    // control) from the assembled system.
+    void
+    solve_newton_system();
+    double
+    residual_norm() const;
 
     // Newton's method for the state `target` from the current iterate.
     // Returns the iterations used, or -1 if it did not converge.
@@ -146,6 +159,7 @@ namespace viscoslide
     // delta it came with: the secant predictor of the next step.
     TrilinosWrappers::MPI::Vector last_increment; // ghosted
     double                        last_increment_delta = 0.;
+    double                        last_increment_s     = 0.;
 
     // One vector per history component, non-ghosted (DG dofs of a cell are
     // owned by its owner).
@@ -156,6 +170,31 @@ namespace viscoslide
 
     // Residual scale of the last assembly: total |surface traction| force.
     double traction_scale;
+
+    // Force control: delta is an unknown and Fn(u, delta) = target_force the
+    // extra equation. Assembly then also provides the border of the Newton
+    // system, b = dR/d delta = (dFn/du)^T, d = dFn/d delta, and the force
+    // mismatch.
+    bool                          force_control = false;
+    double                        target_force  = 0.;
+    TrilinosWrappers::MPI::Vector delta_coupling; // b
+    double                        delta_stiffness = 0.;
+    double                        force_mismatch  = 0.;
+    double                        delta_update    = 0.;
+
+    std::unique_ptr<TrilinosWrappers::SolverDirect>   direct_solver;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+
+    // Sliding phase.
+    void
+    slide();
+    [[noreturn]] void
+    abort_run(const LoadState &target);
+    SurfaceQuantities last_quantities{};
+    double            last_dissipation_rate = 0.;
+    double
+    total_dissipation_rate() const;
+    std::unique_ptr<CsvTable> history_table;
 
     SurfacePostprocessor      postprocessor;
     OutputWriter              writer;

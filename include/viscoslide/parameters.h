@@ -108,6 +108,21 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
 
+    struct Sliding
+    {
+      double      speed;     // V_hat; 0: no sliding phase
+      std::string control;   // "displacement" or "force"
+      double      increment; // in finest cells
+      double      max_distance;
+      double      steady_tolerance;
+      double      steady_window;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     struct Solver
     {
       std::string  linear_solver; // "automatic", "direct", "iterative"
@@ -135,6 +150,7 @@ namespace viscoslide
       Geometry geometry;
       Loading  loading;
       Mesh     mesh;
+      Sliding  sliding;
       Solver   solver;
 
       static void

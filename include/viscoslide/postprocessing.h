@@ -25,6 +25,7 @@ namespace viscoslide
   {
     double normal_force;     // Fn = integral of p = -p_LJ (compressive > 0)
     double tangential_force; // Ft = integral over L of p du_y/dx (eq. 2)
+    double profile_force;    // integral of p h'(x - s): x force on indenter
     double contact_length;   // measure of {g < contact gap threshold}
     double absolute_force;   // integral of |p|, the residual scale
     double minimum_gap;

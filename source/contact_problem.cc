@@ -1171,12 +1171,17 @@ namespace viscoslide
     const double h_min = prm.mesh.finest_cell;
     const double L0    = std::max(last_quantities.contact_length, 10. * h_min);
     const double tau_c = scales.tau_arm / prm.material.E0_over_Einf;
-    const double distance = prm.sliding.max_distance > 0 ?
-                              prm.sliding.max_distance :
-                              4. * L0 + 30. * V * tau_c;
-    const double window   = prm.sliding.steady_window > 0 ?
-                              prm.sliding.steady_window :
-                              std::max(L0, 2. * V * tau_c);
+    // The relaxation length V tau_c sets the transient, but only as far as
+    // it is comparable to the contact: faster than that, the material
+    // crosses the contact unrelaxed and the contact is steady once the
+    // material deformed during the approach has left it.
+    const double relaxation_length = std::min(V * tau_c, 4. * L0);
+    const double distance          = prm.sliding.max_distance > 0 ?
+                                       prm.sliding.max_distance :
+                                       4. * L0 + 30. * relaxation_length;
+    const double window            = prm.sliding.steady_window > 0 ?
+                                       prm.sliding.steady_window :
+                                       std::max(L0, 2. * relaxation_length);
     if (committed.s + distance + 2. * L0 > prm.geometry.domain_width / 2)
       throw Parameters::ExcInvalidInput(
         "'Geometry/Domain width' = " +

@@ -405,9 +405,9 @@ namespace viscoslide
                         Patterns::Double(),
                         "Stop sliding after this distance (in eps) even "
                         "without steady state (then steady = 0). 0: "
-                        "automatic, 4 L + 30 V tau_c with L the contact "
-                        "length after the approach and tau_c the retardation "
-                        "time; refused if the indenter would come closer "
+                        "automatic, 4 L + 30 min(V tau_c, 4 L) with L the "
+                        "contact length after the approach and tau_c the "
+                        "retardation time; refused if the indenter would come closer "
                         "than 2 L to the lateral boundary.");
       prm.declare_entry("Steady-state tolerance",
                         "1e-3",
@@ -420,7 +420,7 @@ namespace viscoslide
                         "0",
                         Patterns::Double(),
                         "Sliding distance (eps) over which steady state is "
-                        "judged. 0: automatic, max(L, 2 V tau_c).");
+                        "judged. 0: automatic, max(L, 2 min(V tau_c, 4 L)).");
       prm.leave_subsection();
     }
 

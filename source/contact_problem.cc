@@ -268,24 +268,23 @@ namespace viscoslide
   }
 
 
-  namespace
+  // The history values of a cell of dof_handler, component-major:
+  // values[c * n_q + q].
+  void
+  ContactProblem::read_cell_history(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<double>                         &values,
+    std::vector<types::global_dof_index>        &dofs) const
   {
-    // The history values of one cell, component-major: values[c*n_q + q].
-    void
-    read_history(const DoFHandler<2>::active_cell_iterator &history_cell,
-                 const std::vector<unsigned int>           &q_to_dof,
-                 const std::array<TrilinosWrappers::MPI::Vector, 5> &history,
-                 std::vector<double>                                &values,
-                 std::vector<types::global_dof_index>               &dofs)
-    {
-      history_cell->get_dof_indices(dofs);
-      const unsigned int n = q_to_dof.size();
-      values.resize(history.size() * n);
-      for (unsigned int c = 0; c < history.size(); ++c)
-        for (unsigned int q = 0; q < n; ++q)
-          values[c * n + q] = history[c](dofs[q_to_dof[q]]);
-    }
-  } // namespace
+    const DoFHandler<dim>::active_cell_iterator history_cell(
+      &triangulation, cell->level(), cell->index(), &history_dof_handler);
+    history_cell->get_dof_indices(dofs);
+    const unsigned int n = quadrature_to_history_dof.size();
+    values.resize(history.size() * n);
+    for (unsigned int c = 0; c < history.size(); ++c)
+      for (unsigned int q = 0; q < n; ++q)
+        values[c * n + q] = history[c](dofs[quadrature_to_history_dof[q]]);
+  }
 
 
   // Residual -R(u) and, if asked, the consistent tangent dR/du of
@@ -343,13 +342,7 @@ namespace viscoslide
                                                                    strain);
           fe_values[displacement].get_function_symmetric_gradients(old_solution,
                                                                    old_strain);
-          const DoFHandler<dim>::active_cell_iterator history_cell(
-            &triangulation, cell->level(), cell->index(), &history_dof_handler);
-          read_history(history_cell,
-                       quadrature_to_history_dof,
-                       history,
-                       history_values,
-                       history_dofs);
+          read_cell_history(cell, history_values, history_dofs);
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
@@ -485,7 +478,7 @@ namespace viscoslide
 
   void
   ContactProblem::solve(const TrilinosWrappers::MPI::Vector &rhs,
-                        TrilinosWrappers::MPI::Vector &      x)
+                        TrilinosWrappers::MPI::Vector       &x)
   {
     TimerOutput::Scope t(timer, "linear solve");
     x.reinit(locally_owned_dofs, mpi_communicator);
@@ -580,10 +573,10 @@ namespace viscoslide
 
         // Backtracking on the residual norm; accept the first step that
         // reduces it, else give up (the caller cuts the step).
-        u0                  = solution;
-        const double delta0 = current.delta;
-        double       alpha  = 1.;
-        bool   reduced = false;
+        u0                   = solution;
+        const double delta0  = current.delta;
+        double       alpha   = 1.;
+        bool         reduced = false;
         for (unsigned int k = 0; k < (prm.solver.line_search ? 8 : 1); ++k)
           {
             TrilinosWrappers::MPI::Vector trial(u0);
@@ -640,8 +633,8 @@ namespace viscoslide
         relaxation_anchor = solution; // the dashpot term vanishes at u
         assemble(true, c);
         solve_newton_system();
-        u0                  = solution;
-        const double delta0 = current.delta;
+        u0                                   = solution;
+        const double                  delta0 = current.delta;
         TrilinosWrappers::MPI::Vector trial(u0);
         trial.add(1., newton_update);
         solution      = trial;
@@ -700,11 +693,11 @@ namespace viscoslide
         // Along a smooth branch the secant predictor saves most of the
         // Newton iterations; if it does not help, start from the last state.
         const double ratio =
-          (trial.s != committed.s && last_increment_s != 0.) ?
-            (trial.s - committed.s) / last_increment_s :
-            (last_increment_delta != 0. ?
-               (trial.delta - committed.delta) / last_increment_delta :
-               0.);
+          (trial.s != committed.s && last_increment_s != 0.)
+            ? (trial.s - committed.s) / last_increment_s
+            : (last_increment_delta != 0.
+                 ? (trial.delta - committed.delta) / last_increment_delta
+                 : 0.);
         if (ratio != 0. && std::abs(ratio) <= 4.)
           {
             TrilinosWrappers::MPI::Vector predicted(locally_owned_dofs,
@@ -714,7 +707,7 @@ namespace viscoslide
                                                     mpi_communicator);
             increment = last_increment;
             predicted.add(ratio, increment);
-            solution = predicted;
+            solution                  = predicted;
             LoadState predicted_state = trial;
             if (force_control)
               predicted_state.delta += ratio * last_increment_delta;
@@ -728,9 +721,9 @@ namespace viscoslide
           {
             solution = backup;
             // Steps that do not change delta (hold, sliding) are cut to 1/64.
-            if (span > 0 ?
-                  fraction * span > prm.loading.minimum_increment * 1.0001 :
-                  fraction > 1. / 64.)
+            if (span > 0
+                  ? fraction * span > prm.loading.minimum_increment * 1.0001
+                  : fraction > 1. / 64.)
               {
                 fraction *= 0.5;
                 ++cuts;
@@ -791,13 +784,7 @@ namespace viscoslide
                                                                    strain);
           fe_values[displacement].get_function_symmetric_gradients(old_solution,
                                                                    old_strain);
-          const DoFHandler<dim>::active_cell_iterator history_cell(
-            &triangulation, cell->level(), cell->index(), &history_dof_handler);
-          read_history(history_cell,
-                       quadrature_to_history_dof,
-                       history,
-                       values,
-                       history_dofs);
+          read_cell_history(cell, values, history_dofs);
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const ArmStress old_h = arm_stress_at(values, q);
@@ -946,7 +933,7 @@ namespace viscoslide
   ContactProblem::record_step(const std::string &phase)
   {
     TimerOutput::Scope t(timer, "postprocessing");
-    const auto sq = postprocessor.integrate(dof_handler,
+    const auto         sq = postprocessor.integrate(dof_handler,
                                             solution,
                                             committed.delta,
                                             committed.s);
@@ -955,9 +942,9 @@ namespace viscoslide
     using F               = CsvTable;
     if (phase == "slide")
       {
-        const double V    = prm.sliding.speed * scales.eps / scales.tau_ref;
-        const double rate = last_dissipation_rate * scales.tau_ref /
-                            (scales.force * scales.eps);
+        const double V = prm.sliding.speed * scales.eps / scales.tau_ref;
+        const double rate =
+          last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
         history_table->add_row(
           {F::format(committed.time / scales.tau_ref),
            F::format(committed.s / scales.eps),
@@ -973,20 +960,20 @@ namespace viscoslide
            std::to_string(dof_handler.n_dofs())});
       }
     else
-    approach_table->add_row(
-      {std::to_string(step_number),
-       phase,
-       F::format(committed.time / scales.tau_ref),
-       F::format(committed.delta / scales.eps),
-       F::format(sq.normal_force / scales.force),
-       F::format(sq.tangential_force / scales.force),
-       F::format(sq.contact_length / scales.R),
-       F::format(sq.minimum_gap / scales.eps),
-       std::to_string(last_newton_iterations),
-       std::to_string(last_step_cuts),
-       std::to_string(last_step_relaxed ? 1 : 0),
-       std::to_string(dof_handler.n_dofs()),
-       std::to_string(triangulation.n_global_active_cells())});
+      approach_table->add_row(
+        {std::to_string(step_number),
+         phase,
+         F::format(committed.time / scales.tau_ref),
+         F::format(committed.delta / scales.eps),
+         F::format(sq.normal_force / scales.force),
+         F::format(sq.tangential_force / scales.force),
+         F::format(sq.contact_length / scales.R),
+         F::format(sq.minimum_gap / scales.eps),
+         std::to_string(last_newton_iterations),
+         std::to_string(last_step_cuts),
+         std::to_string(last_step_relaxed ? 1 : 0),
+         std::to_string(dof_handler.n_dofs()),
+         std::to_string(triangulation.n_global_active_cells())});
     pcout << "  step " << std::setw(4) << step_number << "  " << std::setw(8)
           << phase << "  delta_hat " << std::setw(9) << committed.delta
           << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
@@ -1058,13 +1045,7 @@ namespace viscoslide
           fe_values.reinit(cell);
           fe_values[displacement].get_function_symmetric_gradients(solution,
                                                                    strain);
-          const DoFHandler<dim>::active_cell_iterator history_cell(
-            &triangulation, cell->level(), cell->index(), &history_dof_handler);
-          read_history(history_cell,
-                       quadrature_to_history_dof,
-                       history,
-                       values,
-                       history_dofs);
+          read_cell_history(cell, values, history_dofs);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const ArmStress h     = arm_stress_at(values, q);
@@ -1147,13 +1128,7 @@ namespace viscoslide
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          const DoFHandler<dim>::active_cell_iterator history_cell(
-            &triangulation, cell->level(), cell->index(), &history_dof_handler);
-          read_history(history_cell,
-                       quadrature_to_history_dof,
-                       history,
-                       values,
-                       history_dofs);
+          read_cell_history(cell, values, history_dofs);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             rate += material.dissipation_rate(arm_stress_at(values, q)) *
                     fe_values.JxW(q);
@@ -1176,18 +1151,18 @@ namespace viscoslide
     // crosses the contact unrelaxed and the contact is steady once the
     // material deformed during the approach has left it.
     const double relaxation_length = std::min(V * tau_c, 4. * L0);
-    const double distance          = prm.sliding.max_distance > 0 ?
-                                       prm.sliding.max_distance :
-                                       4. * L0 + 30. * relaxation_length;
-    const double window            = prm.sliding.steady_window > 0 ?
-                                       prm.sliding.steady_window :
-                                       std::max(L0, 2. * relaxation_length);
+    const double distance          = prm.sliding.max_distance > 0
+                                       ? prm.sliding.max_distance
+                                       : 4. * L0 + 30. * relaxation_length;
+    const double window            = prm.sliding.steady_window > 0
+                                       ? prm.sliding.steady_window
+                                       : std::max(L0, 2. * relaxation_length);
     if (committed.s + distance + 2. * L0 > prm.geometry.domain_width / 2)
       throw Parameters::ExcInvalidInput(
         "'Geometry/Domain width' = " +
         std::to_string(prm.geometry.domain_width) + " is too small to slide " +
-        std::to_string(distance) + " eps and stay 2 L = " +
-        std::to_string(2 * L0) +
+        std::to_string(distance) +
+        " eps and stay 2 L = " + std::to_string(2 * L0) +
         " eps away from the lateral boundary; it must be at least " +
         std::to_string(2 * (committed.s + distance + 2 * L0)) +
         " (or set 'Sliding/Maximum sliding distance')");
@@ -1216,8 +1191,7 @@ namespace viscoslide
                                "mu_energy",
                                "newton_iterations",
                                "n_dofs"},
-      version_string() + "; time unit: " + prm.material.time_constant +
-        " time",
+      version_string() + "; time unit: " + prm.material.time_constant + " time",
       mpi_communicator);
 
     // Steady state: over the last `window` of sliding, the controlled
@@ -1238,15 +1212,14 @@ namespace viscoslide
         if (!advance_to(target, "slide"))
           abort_run(target);
         const auto &q = last_quantities;
-        samples.push_back(
-          {committed.s,
-           {force_control ? committed.delta : q.normal_force,
-            q.tangential_force,
-            q.contact_length}});
+        samples.push_back({committed.s,
+                           {force_control ? committed.delta : q.normal_force,
+                            q.tangential_force,
+                            q.contact_length}});
         if (committed.s - s0 < window + L0)
           continue;
-        const double floor[3] = {force_control ? scales.eps :
-                                                 1e-3 * scales.force,
+        const double floor[3] = {force_control ? scales.eps
+                                               : 1e-3 * scales.force,
                                  1e-3 * std::abs(q.normal_force) +
                                    1e-6 * scales.force,
                                  h_min};
@@ -1266,8 +1239,8 @@ namespace viscoslide
           }
       }
 
-    const auto & q        = last_quantities;
-    const double Fn       = q.normal_force, Ft = q.tangential_force;
+    const auto  &q  = last_quantities;
+    const double Fn = q.normal_force, Ft = q.tangential_force;
     const double F_energy = last_dissipation_rate / V;
     using F               = CsvTable;
     CsvTable table(writer.path("steady_state.csv"),
@@ -1292,9 +1265,9 @@ namespace viscoslide
     table.add_row({prm.sliding.control,
                    F::format(prm.adhesion.tabor_parameter),
                    F::format(prm.adhesion.R_over_eps),
-                   prm.geometry.substrate == "layer" ?
-                     F::format(prm.geometry.layer_thickness) :
-                     std::string("half-plane"),
+                   prm.geometry.substrate == "layer"
+                     ? F::format(prm.geometry.layer_thickness)
+                     : std::string("half-plane"),
                    F::format(prm.sliding.speed),
                    F::format(committed.delta / scales.eps),
                    F::format(Fn / scales.force),

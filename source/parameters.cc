@@ -400,15 +400,16 @@ namespace viscoslide
                         Patterns::Double(),
                         "Sliding distance per time step, in finest surface "
                         "cells (Mesh/Finest surface cell); dt = increment/V.");
-      prm.declare_entry("Maximum sliding distance",
-                        "0",
-                        Patterns::Double(),
-                        "Stop sliding after this distance (in eps) even "
-                        "without steady state (then steady = 0). 0: "
-                        "automatic, 4 L + 30 min(V tau_c, 4 L) with L the "
-                        "contact length after the approach and tau_c the "
-                        "retardation time; refused if the indenter would come closer "
-                        "than 2 L to the lateral boundary.");
+      prm.declare_entry(
+        "Maximum sliding distance",
+        "0",
+        Patterns::Double(),
+        "Stop sliding after this distance (in eps) even "
+        "without steady state (then steady = 0). 0: "
+        "automatic, 4 L + 30 min(V tau_c, 4 L) with L the "
+        "contact length after the approach and tau_c the "
+        "retardation time; refused if the indenter would come closer "
+        "than 2 L to the lateral boundary.");
       prm.declare_entry("Steady-state tolerance",
                         "1e-3",
                         Patterns::Double(),

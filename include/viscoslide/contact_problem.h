@@ -84,7 +84,7 @@ namespace viscoslide
     prepare_linear_solver();
     void
     solve(const TrilinosWrappers::MPI::Vector &rhs,
-          TrilinosWrappers::MPI::Vector &      x);
+          TrilinosWrappers::MPI::Vector       &x);
     // The Newton update (newton_update, and delta_update under force
     // control) from the assembled system.
     void
@@ -106,6 +106,10 @@ namespace viscoslide
     bool
     advance_to(const LoadState &target, const std::string &phase);
 
+    void
+    read_cell_history(const DoFHandler<dim>::active_cell_iterator &cell,
+                      std::vector<double>                         &values,
+                      std::vector<types::global_dof_index>        &dofs) const;
     ArmStress
     arm_stress_at(const std::vector<double> &history_values,
                   unsigned int               q) const;
@@ -182,18 +186,18 @@ namespace viscoslide
     double                        force_mismatch  = 0.;
     double                        delta_update    = 0.;
 
-    std::unique_ptr<TrilinosWrappers::SolverDirect>   direct_solver;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct_solver;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
     // Sliding phase.
     void
     slide();
     [[noreturn]] void
-    abort_run(const LoadState &target);
+                      abort_run(const LoadState &target);
     SurfaceQuantities last_quantities{};
     double            last_dissipation_rate = 0.;
     double
-    total_dissipation_rate() const;
+                              total_dissipation_rate() const;
     std::unique_ptr<CsvTable> history_table;
 
     SurfacePostprocessor      postprocessor;

@@ -720,10 +720,12 @@ namespace viscoslide
         if (its < 0)
           {
             solution = backup;
-            // Steps that do not change delta (hold, sliding) are cut to 1/64.
+            // Steps that do not change delta (hold, sliding) are cut down
+            // to 1/64; a step that changes nothing (the start) is not cut.
+            const bool moves = target.s != start.s || target.time != start.time;
             if (span > 0
                   ? fraction * span > prm.loading.minimum_increment * 1.0001
-                  : fraction > 1. / 64.)
+                  : moves && fraction > 1. / 64.)
               {
                 fraction *= 0.5;
                 ++cuts;

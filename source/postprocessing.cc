@@ -127,29 +127,57 @@ namespace viscoslide
   }
 
 
-  std::vector<ProfilePoint>
-  SurfacePostprocessor::profile(const DoFHandler<2>                 &dofs,
-                                const TrilinosWrappers::MPI::Vector &u,
-                                const double                         delta,
-                                const double                         s) const
+  template <typename Function>
+  void
+  SurfacePostprocessor::for_each_sampled_face(
+    const DoFHandler<2>                 &dofs,
+    const TrilinosWrappers::MPI::Vector &u,
+    const double                         delta,
+    const double                         s,
+    const Function                      &f) const
   {
     const FEValuesExtractors::Scalar uy(1);
     const Quadrature<1>              sampling = sampling_points(4);
     FEFaceValues<2>                  values(dofs.get_fe(),
                            sampling,
                            update_values | update_quadrature_points);
-    std::vector<double>              u_y(sampling.size());
-    std::vector<ProfilePoint>        points;
-    for_each_top_face(dofs, top, [&](const auto &cell, const unsigned int f) {
-      values.reinit(cell, f);
-      values[uy].get_function_values(u, u_y);
-      for (unsigned int q = 0; q < sampling.size(); ++q)
-        {
-          const double x = values.quadrature_point(q)[0];
-          const double g = gap(indenter, eps, delta, s, x, u_y[q]);
-          points.push_back({x, g, -law.traction(g), u_y[q]});
-        }
-    });
+    std::vector<double>              u_y(sampling.size()), x(sampling.size()),
+      g(sampling.size());
+    for_each_top_face(dofs,
+                      top,
+                      [&](const auto &cell, const unsigned int face) {
+                        values.reinit(cell, face);
+                        values[uy].get_function_values(u, u_y);
+                        for (unsigned int q = 0; q < sampling.size(); ++q)
+                          {
+                            x[q] = values.quadrature_point(q)[0];
+                            g[q] = gap(indenter, eps, delta, s, x[q], u_y[q]);
+                          }
+                        f(cell, face, x, g, u_y);
+                      });
+  }
+
+
+  std::vector<ProfilePoint>
+  SurfacePostprocessor::profile(const DoFHandler<2>                 &dofs,
+                                const TrilinosWrappers::MPI::Vector &u,
+                                const double                         delta,
+                                const double                         s) const
+  {
+    std::vector<ProfilePoint> points;
+    for_each_sampled_face(
+      dofs,
+      u,
+      delta,
+      s,
+      [&](const auto &,
+          unsigned int,
+          const auto &x,
+          const auto &g,
+          const auto &u_y) {
+        for (unsigned int q = 0; q < x.size(); ++q)
+          points.push_back({x[q], g[q], -law.traction(g[q]), u_y[q]});
+      });
 
     const auto gathered =
       Utilities::MPI::gather(dofs.get_communicator(), points, 0);
@@ -180,28 +208,23 @@ namespace viscoslide
     const double                         g_lo,
     const double                         g_hi) const
   {
-    const FEValuesExtractors::Scalar       uy(1);
-    const Quadrature<1>                    sampling = sampling_points(4);
-    FEFaceValues<2>                        values(dofs.get_fe(),
-                           sampling,
-                           update_values | update_quadrature_points);
-    std::vector<double>                    u_y(sampling.size());
     std::vector<std::pair<double, double>> intervals;
-    for_each_top_face(dofs, top, [&](const auto &cell, const unsigned int f) {
-      values.reinit(cell, f);
-      values[uy].get_function_values(u, u_y);
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
-      for (unsigned int q = 0; q < sampling.size(); ++q)
-        {
-          const double g =
-            gap(indenter, eps, delta, s, values.quadrature_point(q)[0], u_y[q]);
-          lo = std::min(lo, g);
-          hi = std::max(hi, g);
-        }
-      if (lo <= g_hi && hi >= g_lo)
-        intervals.push_back(std::minmax(cell->face(f)->vertex(0)[0],
-                                        cell->face(f)->vertex(1)[0]));
-    });
+    for_each_sampled_face(dofs,
+                          u,
+                          delta,
+                          s,
+                          [&](const auto  &cell,
+                              unsigned int face,
+                              const auto &,
+                              const auto &g,
+                              const auto &) {
+                            const auto [lo, hi] =
+                              std::minmax_element(g.begin(), g.end());
+                            if (*lo <= g_hi && *hi >= g_lo)
+                              intervals.push_back(
+                                std::minmax(cell->face(face)->vertex(0)[0],
+                                            cell->face(face)->vertex(1)[0]));
+                          });
     std::vector<std::pair<double, double>> all;
     for (const auto &part :
          Utilities::MPI::all_gather(dofs.get_communicator(), intervals))

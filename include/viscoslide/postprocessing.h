@@ -79,6 +79,16 @@ namespace viscoslide
                       double                               g_hi) const;
 
   private:
+    // Calls f(cell, face, x, gap, u_y) with 5 equally spaced samples on
+    // every locally owned top face.
+    template <typename Function>
+    void
+    for_each_sampled_face(const DoFHandler<2>                 &dofs,
+                          const TrilinosWrappers::MPI::Vector &u,
+                          double                               delta,
+                          double                               s,
+                          const Function                      &f) const;
+
     const InteractionLaw    &law;
     const Indenter          &indenter;
     const double             eps;

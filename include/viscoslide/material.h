@@ -67,11 +67,6 @@ namespace viscoslide
     double
     arm_energy(const ArmStress &h) const;
 
-    const SymmetricTensor<4, 2> &
-    relaxed_stiffness() const
-    {
-      return C0;
-    }
 
   private:
     double                E1, nu, tau;

@@ -23,6 +23,8 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <viscoslide/contact_problem.h>
+#include <viscoslide/mesh.h>
+#include <viscoslide/steady_state.h>
 
 #include <cmath>
 #include <iomanip>
@@ -31,10 +33,6 @@ namespace viscoslide
 {
   namespace
   {
-    // Boundary ids of GridGenerator::subdivided_hyper_rectangle(colorize).
-    constexpr types::boundary_id bottom_boundary = 2;
-    constexpr types::boundary_id top_boundary    = 3;
-
     // Surface fields for DataOutFaces: pressure and gap from u_y and x.
     class SurfaceFields : public DataPostprocessor<2>
     {
@@ -188,21 +186,6 @@ namespace viscoslide
         if (support[i].distance(quadrature.point(q)) < 1e-12)
           quadrature_to_history_dof.push_back(i);
     AssertDimension(quadrature_to_history_dof.size(), quadrature.size());
-  }
-
-
-  // The block -W/2 < x < W/2, -H < y < 0 in square coarse cells.
-  void
-  ContactProblem::make_grid()
-  {
-    const double       W = prm.geometry.domain_width, H = prm.geometry.height();
-    const unsigned int nx = std::max(1., std::round(W / std::min(W, H)));
-    const unsigned int ny = std::max(1., std::round(H / std::min(W, H)));
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              {nx, ny},
-                                              Point<dim>(-W / 2, -H),
-                                              Point<dim>(W / 2, 0),
-                                              true);
   }
 
 
@@ -819,11 +802,9 @@ namespace viscoslide
   }
 
 
-  // Desired cell size: the finest cell at the contact edges, growing as
-  // grading x distance away from them. Cells are refined below their
-  // desired level and coarsened only two levels above it, so that a moving
-  // edge does not make the mesh flicker. Transfers solution, last committed
-  // solution and history. Returns whether the mesh changed.
+  // Refines at the contact edges (flag_cells_near_edges()) and transfers
+  // solution, last committed solution and history. Returns whether the
+  // mesh changed.
   bool
   ContactProblem::adapt_mesh()
   {
@@ -837,46 +818,7 @@ namespace viscoslide
     if (edges.empty()) // no contact yet: resolve the region under the apex
       edges.emplace_back(current.s, current.s);
 
-    const double coarse_width =
-      prm.geometry.domain_width /
-      std::max(1.,
-               std::round(
-                 prm.geometry.domain_width /
-                 std::min(prm.geometry.domain_width, prm.geometry.height())));
-    const int max_level = static_cast<int>(
-      std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
-
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto box = cell->bounding_box();
-          double     d   = std::numeric_limits<double>::max();
-          for (const auto &[a, b] : edges)
-            {
-              const double dx =
-                std::max({0., a - box.upper_bound(0), box.lower_bound(0) - b});
-              const double dy = std::max(0., -box.upper_bound(1));
-              d               = std::min(d, std::hypot(dx, dy));
-            }
-          const double h_desired =
-            std::max(prm.mesh.finest_cell, prm.mesh.grading * d);
-          const int level =
-            std::clamp(static_cast<int>(
-                         std::ceil(std::log2(coarse_width / h_desired) - 1e-9)),
-                       0,
-                       max_level);
-          if (cell->level() < level)
-            cell->set_refine_flag();
-          else if (cell->level() > level + 1)
-            cell->set_coarsen_flag();
-        }
-    triangulation.prepare_coarsening_and_refinement();
-    bool changes = false;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          (cell->refine_flag_set() || cell->coarsen_flag_set()))
-        changes = true;
-    if (Utilities::MPI::max(changes ? 1 : 0, mpi_communicator) == 0)
+    if (!flag_cells_near_edges(triangulation, edges, prm))
       return false;
 
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
@@ -998,20 +940,13 @@ namespace viscoslide
   void
   ContactProblem::write_profile(const std::string &filename)
   {
-    const auto points = postprocessor.profile(dof_handler,
-                                              solution,
-                                              committed.delta,
-                                              committed.s);
-    CsvTable   table(writer.path(filename),
-                   {"x_over_R", "gap_over_eps", "p_hat", "u_y_over_eps"},
-                   "delta_hat = " + CsvTable::format(committed.delta) +
-                     ", time_over_tau = " + CsvTable::format(committed.time),
-                   mpi_communicator);
-    for (const auto &p : points)
-      table.add_row({CsvTable::format(p.x / scales.R),
-                     CsvTable::format(p.gap / scales.eps),
-                     CsvTable::format(p.pressure / scales.sigma_max),
-                     CsvTable::format(p.u_y / scales.eps)});
+    write_profile_csv(writer.path(filename),
+                      postprocessor.profile(
+                        dof_handler, solution, committed.delta, committed.s),
+                      scales,
+                      "delta_hat = " + CsvTable::format(committed.delta) +
+                        ", time_over_tau = " + CsvTable::format(committed.time),
+                      mpi_communicator);
   }
 
 
@@ -1241,10 +1176,72 @@ namespace viscoslide
           }
       }
 
-    const auto  &q  = last_quantities;
+    write_steady_state(prm.sliding.speed,
+                       committed.delta,
+                       last_quantities,
+                       last_dissipation_rate,
+                       steady,
+                       committed.s - s0,
+                       "transient");
+    write_profile("surface_profile_steady.csv");
+    pcout << (steady ? "Steady state" : "NO steady state") << " after "
+          << committed.s - s0 << " eps" << std::endl;
+    force_control = false;
+  }
+
+
+  // The steady state solved directly in the indenter's frame, starting
+  // from the relaxed state of the approach (see steady_state.h). The
+  // triangulation then belongs to the steady-state solver: nothing of the
+  // transient solution is used afterwards.
+  void
+  ContactProblem::slide_steady()
+  {
+    SteadyStateSolver steady(prm,
+                             scales,
+                             material,
+                             *law,
+                             *indenter,
+                             postprocessor,
+                             triangulation,
+                             timer);
+    steady.initialize(dof_handler, solution, committed.delta, committed.s);
+    if (prm.sliding.control == "force")
+      steady.hold_force(last_quantities.normal_force);
+    pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
+          << prm.sliding.control << " control, by continuation from the "
+          << "relaxed state" << std::endl;
+    const bool converged = steady.continue_to(prm.sliding.speed);
+    write_steady_state(steady.speed(),
+                       steady.approach(),
+                       steady.quantities(),
+                       steady.dissipation_rate(),
+                       converged,
+                       0.,
+                       "steady-state");
+    steady.write_profile(writer.path("surface_profile_steady.csv"));
+    if (prm.output.write_fields)
+      steady.write_fields(writer, 0);
+    if (!converged)
+      throw std::runtime_error(
+        "The steady-state solver did not converge at V_hat = " +
+        std::to_string(prm.sliding.speed) +
+        "; steady_state.csv holds the last converged speed with steady = 0");
+  }
+
+
+  void
+  ContactProblem::write_steady_state(const double             V_hat,
+                                     const double             delta,
+                                     const SurfaceQuantities &q,
+                                     const double             dissipation_rate,
+                                     const bool               steady,
+                                     const double             distance,
+                                     const std::string       &solver)
+  {
+    const double V  = V_hat * scales.eps / scales.tau_ref;
     const double Fn = q.normal_force, Ft = q.tangential_force;
-    const double F_energy = last_dissipation_rate / V;
-    using F               = CsvTable;
+    using F = CsvTable;
     CsvTable table(writer.path("steady_state.csv"),
                    {"control",
                     "mu_T",
@@ -1261,7 +1258,8 @@ namespace viscoslide
                     "dissipation_rate_hat",
                     "steady",
                     "sliding_distance_over_eps",
-                    "time_constant"},
+                    "time_constant",
+                    "solver"},
                    version_string(),
                    mpi_communicator);
     table.add_row({prm.sliding.control,
@@ -1270,25 +1268,24 @@ namespace viscoslide
                    prm.geometry.substrate == "layer"
                      ? F::format(prm.geometry.layer_thickness)
                      : std::string("half-plane"),
-                   F::format(prm.sliding.speed),
-                   F::format(committed.delta / scales.eps),
+                   F::format(V_hat),
+                   F::format(delta / scales.eps),
                    F::format(Fn / scales.force),
                    F::format(Ft / scales.force),
                    F::format(q.profile_force / scales.force),
                    F::format(std::abs(Ft / Fn)),
-                   F::format(std::abs(F_energy / Fn)),
+                   F::format(std::abs(dissipation_rate / V / Fn)),
                    F::format(q.contact_length / scales.R),
-                   F::format(last_dissipation_rate * scales.tau_ref /
+                   F::format(dissipation_rate * scales.tau_ref /
                              (scales.force * scales.eps)),
                    steady ? "1" : "0",
-                   F::format(committed.s - s0),
-                   prm.material.time_constant});
-    write_profile("surface_profile_steady.csv");
-    pcout << (steady ? "Steady state" : "NO steady state") << " after "
-          << committed.s - s0 << " eps: mu = " << std::abs(Ft / Fn)
-          << ", mu_energy = " << std::abs(F_energy / Fn)
-          << ", L_hat = " << q.contact_length / scales.R << std::endl;
-    force_control = false;
+                   F::format(distance),
+                   prm.material.time_constant,
+                   solver});
+    pcout << "mu = " << std::abs(Ft / Fn)
+          << ", mu_energy = " << std::abs(dissipation_rate / V / Fn)
+          << ", L_hat = " << q.contact_length / scales.R
+          << ", F_n_hat = " << Fn / scales.force << std::endl;
   }
 
 
@@ -1316,7 +1313,7 @@ namespace viscoslide
                                  comment,
                                  mpi_communicator);
 
-    make_grid();
+    make_block(triangulation, prm);
     setup_system();
     committed.delta = prm.loading.initial_approach;
     current         = committed;
@@ -1367,6 +1364,12 @@ namespace viscoslide
             if (!advance_to(target, "hold"))
               fail(target);
           }
+      }
+    if (prm.sliding.speed > 0 && prm.sliding.solver == "steady-state")
+      {
+        slide_steady();
+        timer.print_wall_time_statistics(mpi_communicator);
+        return;
       }
     if (prm.sliding.speed > 0)
       slide();

@@ -99,6 +99,13 @@ namespace viscoslide
   }
 
 
+  ArmStress
+  StandardLinearSolid::arm_stress(const SymmetricTensor<2, 2> &arm_strain) const
+  {
+    return {C1 * arm_strain, lambda1 * trace(arm_strain)};
+  }
+
+
   double
   StandardLinearSolid::dissipation_rate(const ArmStress &h) const
   {

@@ -133,7 +133,9 @@ namespace viscoslide
                         "Surface traction-gap law on the top boundary. "
                         "'lennard-jones': the 3-9 law of physics.md. "
                         "'repulsive': only its repulsive branch (g < eps), "
-                        "i.e. frictionless contact without adhesion.");
+                        "rounded to zero slope over [0.9 eps, eps] so that "
+                        "Newton converges, i.e. frictionless contact "
+                        "without adhesion.");
       prm.declare_entry("Tabor parameter",
                         "6.08",
                         Patterns::Double(),
@@ -422,6 +424,33 @@ namespace viscoslide
                         Patterns::Double(),
                         "Sliding distance (eps) over which steady state is "
                         "judged. 0: automatic, max(L, 2 min(V tau_c, 4 L)).");
+      prm.declare_entry(
+        "Solver",
+        "transient",
+        Patterns::Selection("transient|steady-state"),
+        "'transient': the moving-profile time stepping of the paper until "
+        "steady state. 'steady-state': the steady sliding state solved "
+        "directly in the frame of the indenter (doc/steady_state.md), with "
+        "continuation in V_hat from the relaxed state of the approach; "
+        "no history.csv, no retraction afterwards.");
+      prm.declare_entry("Continuation factor",
+                        "4",
+                        Patterns::Double(),
+                        "Steady-state solver: largest ratio between two "
+                        "successive speeds of the continuation from the "
+                        "relaxed state to Sliding speed (halved in log "
+                        "scale when Newton fails). It starts at the speed "
+                        "whose relaxation length V tau is a tenth of the "
+                        "finest surface cell.");
+      prm.declare_entry("Viscous strain degree",
+                        "1",
+                        Patterns::Integer(),
+                        "Steady-state solver: polynomial degree of the "
+                        "discontinuous viscous strain field (FE_DGQ). The "
+                        "arm sees the L2 projection of eps(u) onto this "
+                        "space (doc/steady_state.md); 1 agrees with 2 to "
+                        "0.03 % in mu in the Hunter test at a fifth of the "
+                        "cost.");
       prm.leave_subsection();
     }
 
@@ -429,13 +458,22 @@ namespace viscoslide
     Sliding::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Sliding");
-      speed            = prm.get_double("Sliding speed");
-      control          = prm.get("Control");
-      increment        = prm.get_double("Sliding increment");
-      max_distance     = prm.get_double("Maximum sliding distance");
-      steady_tolerance = prm.get_double("Steady-state tolerance");
-      steady_window    = prm.get_double("Steady-state window");
+      speed                 = prm.get_double("Sliding speed");
+      control               = prm.get("Control");
+      increment             = prm.get_double("Sliding increment");
+      max_distance          = prm.get_double("Maximum sliding distance");
+      steady_tolerance      = prm.get_double("Steady-state tolerance");
+      steady_window         = prm.get_double("Steady-state window");
+      solver                = prm.get("Solver");
+      continuation_factor   = prm.get_double("Continuation factor");
+      viscous_strain_degree = prm.get_integer("Viscous strain degree");
       prm.leave_subsection();
+      require(continuation_factor > 1 && std::isfinite(continuation_factor),
+              entry("Sliding", "Continuation factor", continuation_factor) +
+                " must be larger than 1");
+      require(viscous_strain_degree >= 0 && viscous_strain_degree <= 4,
+              entry("Sliding", "Viscous strain degree", viscous_strain_degree) +
+                " must be between 0 and 4");
       require(speed >= 0 && std::isfinite(speed),
               entry("Sliding", "Sliding speed", speed) +
                 " must not be negative");
@@ -552,6 +590,10 @@ namespace viscoslide
                 geometry.substrate == "half-plane",
               entry("Geometry", "Domain width", geometry.domain_width) +
                 " must be at least twice the Layer thickness");
+      require(sliding.solver == "transient" || !loading.retract ||
+                sliding.speed == 0,
+              "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "
+              "the steady-state solver has no time to retract in");
     }
   } // namespace Parameters
 

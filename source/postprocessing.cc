@@ -2,6 +2,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <viscoslide/output.h>
 #include <viscoslide/postprocessing.h>
 
 #include <algorithm>
@@ -230,5 +231,24 @@ namespace viscoslide
          Utilities::MPI::all_gather(dofs.get_communicator(), intervals))
       all.insert(all.end(), part.begin(), part.end());
     return all;
+  }
+
+
+  void
+  write_profile_csv(const std::string               &path,
+                    const std::vector<ProfilePoint> &points,
+                    const Scales                    &scales,
+                    const std::string               &comment,
+                    MPI_Comm                         comm)
+  {
+    CsvTable table(path,
+                   {"x_over_R", "gap_over_eps", "p_hat", "u_y_over_eps"},
+                   comment,
+                   comm);
+    for (const auto &p : points)
+      table.add_row({CsvTable::format(p.x / scales.R),
+                     CsvTable::format(p.gap / scales.eps),
+                     CsvTable::format(p.pressure / scales.sigma_max),
+                     CsvTable::format(p.u_y / scales.eps)});
   }
 } // namespace viscoslide

@@ -1,6 +1,6 @@
-# Runs one test: viscoslide on NAME.prm (unless NAME.check runs everything
-# itself, see NO_DEFAULT_RUN below), then NAME.check, then numdiff of the
-# check's summary against the stored NAME.output.
+# Runs one test: viscoslide on NAME.prm (if there is one; otherwise the
+# check runs everything itself), then CHECK.check (CHECK defaults to NAME),
+# then numdiff of the check's summary against the stored NAME.output.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
@@ -20,7 +20,7 @@ if(EXISTS ${SOURCE_DIR}/${NAME}.prm)
   endif()
 endif()
 
-execute_process(COMMAND ${PYTHON} ${SOURCE_DIR}/${NAME}.check
+execute_process(COMMAND ${PYTHON} ${SOURCE_DIR}/${CHECK}.check
     ${WORK_DIR} ${VISCOSLIDE} ${MPIEXEC} ${SOURCE_DIR}
   WORKING_DIRECTORY ${WORK_DIR}
   OUTPUT_FILE ${WORK_DIR}/summary

@@ -73,8 +73,6 @@ namespace viscoslide
     };
 
     void
-    make_grid();
-    void
     setup_system();
     void
     assemble(bool with_matrix, double surface_damping);
@@ -189,9 +187,20 @@ namespace viscoslide
     std::unique_ptr<TrilinosWrappers::SolverDirect>    direct_solver;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
-    // Sliding phase.
+    // Sliding phase, by time stepping or by the steady-state solver.
     void
     slide();
+    void
+    slide_steady();
+    // steady_state.csv: one row for the sliding case.
+    void
+    write_steady_state(double                   V_hat,
+                       double                   delta,
+                       const SurfaceQuantities &quantities,
+                       double                   dissipation_rate,
+                       bool                     steady,
+                       double                   distance,
+                       const std::string       &solver);
     [[noreturn]] void
                       abort_run(const LoadState &target);
     SurfaceQuantities last_quantities{};

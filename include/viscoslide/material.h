@@ -67,6 +67,30 @@ namespace viscoslide
     double
     arm_energy(const ArmStress &h) const;
 
+    // The arm stress C1 : (eps - eps_v) of the steady-state formulation,
+    // where the viscous strain eps_v is the unknown. Its out-of-plane
+    // component is zero (eps_zz = 0 and eps_v relaxes towards eps), so
+    // h_zz = lambda1 tr(eps - eps_v).
+    ArmStress
+    arm_stress(const SymmetricTensor<2, 2> &arm_strain) const;
+
+    // C1 (in plane) and its Young's modulus Einf - E0.
+    const SymmetricTensor<4, 2> &
+    arm_stiffness() const
+    {
+      return C1;
+    }
+    double
+    arm_modulus() const
+    {
+      return E1;
+    }
+    double
+    relaxation_time() const
+    {
+      return tau;
+    }
+
 
   private:
     double                E1, nu, tau;

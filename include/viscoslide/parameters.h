@@ -116,6 +116,9 @@ namespace viscoslide
       double      max_distance;
       double      steady_tolerance;
       double      steady_window;
+      std::string solver; // "transient" or "steady-state"
+      double      continuation_factor;
+      int         viscous_strain_degree;
 
       static void
       declare(ParameterHandler &prm);

@@ -13,7 +13,9 @@
 
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
+#include <viscoslide/parameters.h>
 
+#include <string>
 #include <vector>
 
 namespace viscoslide
@@ -96,6 +98,15 @@ namespace viscoslide
     const unsigned int       n_face_points;
     const types::boundary_id top;
   };
+
+  // The surface profile CSV (x_over_R, gap_over_eps, p_hat, u_y_over_eps)
+  // of both solvers; rank 0 writes.
+  void
+  write_profile_csv(const std::string               &path,
+                    const std::vector<ProfilePoint> &points,
+                    const Scales                    &scales,
+                    const std::string               &comment,
+                    MPI_Comm                         comm);
 } // namespace viscoslide
 
 #endif

@@ -1,0 +1,40 @@
+// The block and its contact-edge refinement, shared by the transient and
+// the steady-state solvers.
+#ifndef viscoslide_mesh_h
+#define viscoslide_mesh_h
+
+#include <deal.II/distributed/tria.h>
+
+#include <viscoslide/parameters.h>
+
+#include <utility>
+#include <vector>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  // Boundary ids of GridGenerator::subdivided_hyper_rectangle(colorize).
+  constexpr types::boundary_id left_boundary   = 0;
+  constexpr types::boundary_id right_boundary  = 1;
+  constexpr types::boundary_id bottom_boundary = 2;
+  constexpr types::boundary_id top_boundary    = 3;
+
+  // The block -W/2 < x < W/2, -H < y < 0 in square coarse cells.
+  void
+  make_block(parallel::distributed::Triangulation<2> &triangulation,
+             const Parameters::AllParameters         &prm);
+
+  // Flags cells for refinement and coarsening so that the cell size is the
+  // finest surface cell at the contact edges (x-intervals on the surface)
+  // and grows as Mesh grading x distance away from them. Cells are refined
+  // below their desired level and coarsened only two levels above it, so
+  // that a moving edge does not make the mesh flicker. Returns whether any
+  // cell on any process will change.
+  bool
+  flag_cells_near_edges(parallel::distributed::Triangulation<2> &triangulation,
+                        const std::vector<std::pair<double, double>> &edges,
+                        const Parameters::AllParameters              &prm);
+} // namespace viscoslide
+
+#endif

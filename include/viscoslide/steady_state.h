@@ -1,0 +1,179 @@
+// The steady sliding state solved directly, in the frame of the indenter.
+//
+// There the material flows with velocity -V e_x under the indenter, which
+// sits still at x = s. The Maxwell arm is written through its viscous strain
+// eps_v, h = C1 : (eps(u) - eps_v), and its evolution
+// d eps_v/dt = (eps - eps_v)/tau becomes the stationary advection-reaction
+// equation
+//     -V tau d(eps_v)/dx + eps_v = eps(u),  eps_v = 0 where material enters
+// (x = +W/2). eps_v is a discontinuous field (FE_DGQ, upwind fluxes as in
+// step-12) next to the Q2 displacement in one FESystem; equilibrium with
+// the surface traction law and this equation are solved together by
+// Newton's method (plus delta under force control, as in the transient
+// solver). doc/steady_state.md has the formulation and its limits.
+#ifndef viscoslide_steady_state_h
+#define viscoslide_steady_state_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <viscoslide/indenter.h>
+#include <viscoslide/interaction_law.h>
+#include <viscoslide/material.h>
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/postprocessing.h>
+
+#include <memory>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  class SteadyStateSolver
+  {
+  public:
+    static constexpr unsigned int dim = 2;
+
+    SteadyStateSolver(const Parameters::AllParameters         &prm,
+                      const Scales                            &scales,
+                      const StandardLinearSolid               &material,
+                      const InteractionLaw                    &law,
+                      const Indenter                          &indenter,
+                      const SurfacePostprocessor              &postprocessor,
+                      parallel::distributed::Triangulation<2> &triangulation,
+                      TimerOutput                             &timer);
+    ~SteadyStateSolver();
+
+    // Starts from a relaxed equilibrium: the displacement u of a
+    // FESystem(FE_Q(2), 2) on the same triangulation, at approach delta with
+    // the indenter at s; eps_v = eps(u) there.
+    void
+    initialize(const DoFHandler<dim>               &displacement_dofs,
+               const TrilinosWrappers::MPI::Vector &u,
+               double                               delta,
+               double                               s);
+
+    // Under force control delta is an unknown and Fn is held at this value.
+    void
+    hold_force(double normal_force);
+
+    // Continues the steady state from its present speed to V_hat in steps
+    // no larger than the Continuation factor (shorter where Newton fails),
+    // adapting the mesh to the contact edges at each speed. Returns false
+    // if a step could not be solved; the state is then the last converged
+    // one, at speed().
+    bool
+    continue_to(double V_hat);
+
+    double
+    speed() const
+    {
+      return V_hat;
+    }
+    double
+    approach() const
+    {
+      return delta;
+    }
+    const SurfaceQuantities &
+    quantities() const
+    {
+      return last_quantities;
+    }
+    // integral of D over the block
+    double
+    dissipation_rate() const;
+    unsigned int
+    newton_iterations() const
+    {
+      return total_newton_iterations;
+    }
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    void
+    write_profile(const std::string &path) const;
+    // Displacement, viscous strain, stress and D over the block, and the
+    // surface pressure and gap, as VTU/PVTU through the writer.
+    void
+    write_fields(OutputWriter &writer, unsigned int counter) const;
+
+  private:
+    void
+    setup_system();
+    void
+    assemble(bool with_matrix);
+    void
+    solve_newton_system();
+    double
+    residual_norm() const;
+    // Newton's method at the present V_hat; the iterations used or -1.
+    int
+    solve_newton();
+    bool
+    adapt_mesh();
+    void
+    update_quantities();
+
+    const Parameters::AllParameters         &prm;
+    const Scales                            &scales;
+    const StandardLinearSolid               &material;
+    const InteractionLaw                    &law;
+    const Indenter                          &indenter;
+    const SurfacePostprocessor              &postprocessor;
+    parallel::distributed::Triangulation<2> &triangulation;
+    TimerOutput                             &timer;
+    MPI_Comm                                 mpi_communicator;
+    ConditionalOStream                       pcout;
+
+    // Components: u_x, u_y, then eps_v xx, yy, xy.
+    const FESystem<dim>   fe;
+    DoFHandler<dim>       dof_handler;
+    const QGauss<dim>     quadrature;
+    const QGauss<dim - 1> face_quadrature; // top surface (traction law)
+    const QGauss<dim - 1> flux_quadrature; // vertical faces (upwind fluxes)
+    // The viscous-strain rows are scaled by the arm modulus so that both
+    // blocks of the residual are forces.
+    const double strain_row_scale;
+    // Local dofs of the first viscous-strain component.
+    std::vector<unsigned int> strain_basis;
+
+    IndexSet                       locally_owned_dofs, locally_relevant_dofs;
+    AffineConstraints<double>      constraints;
+    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::MPI::Vector  solution; // ghosted
+    TrilinosWrappers::MPI::Vector  system_rhs, newton_update;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+
+    double V_hat = 0.;
+    double delta = 0.;
+    double s     = 0.;
+
+    bool                          force_control = false;
+    double                        target_force  = 0.;
+    TrilinosWrappers::MPI::Vector delta_coupling;
+    double delta_stiffness = 0., force_mismatch = 0., delta_update = 0.,
+           traction_scale = 0.;
+
+    SurfaceQuantities last_quantities{};
+    unsigned int      total_newton_iterations = 0;
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,916 @@
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <viscoslide/mesh.h>
+#include <viscoslide/steady_state.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace viscoslide
+{
+  namespace
+  {
+    // FESystem components: displacement, then the viscous strain.
+    constexpr unsigned int first_strain_component = 2;
+    constexpr unsigned int n_strain_components    = 3; // xx, yy, xy
+
+    // Strain component c (xx, yy, xy) of a symmetric tensor.
+    double
+    strain_component(const SymmetricTensor<2, 2> &t, const unsigned int c)
+    {
+      return c == 0 ? t[0][0] : (c == 1 ? t[1][1] : t[0][1]);
+    }
+
+    SymmetricTensor<2, 2>
+    unit_strain(const unsigned int c)
+    {
+      SymmetricTensor<2, 2> t;
+      if (c == 2)
+        t[0][1] = 1.;
+      else
+        t[c][c] = 1.;
+      return t;
+    }
+
+    SymmetricTensor<2, 2>
+    strain_tensor(const double xx, const double yy, const double xy)
+    {
+      SymmetricTensor<2, 2> t;
+      t[0][0] = xx;
+      t[1][1] = yy;
+      t[0][1] = xy;
+      return t;
+    }
+
+    // The L2 projection onto the viscous-strain space of a cell, acting on
+    // values at the quadrature points: (Pi f)(q) = sum_q' P(q, q') f(q'),
+    // basis = the local dofs of one strain component. The arm sees
+    // Pi eps(u), the part of the strain that eps_v can represent: then
+    // eps_v = Pi eps(u) is exactly the relaxed state, and a degree below 2
+    // (which cannot hold the strain of Q2) adds no spurious arm stress.
+    FullMatrix<double>
+    strain_projection(const FEValues<2>               &fe_values,
+                      const std::vector<unsigned int> &basis)
+    {
+      const unsigned int n_q = fe_values.n_quadrature_points, m = basis.size();
+      FullMatrix<double> mass(m, m), P(n_q, n_q);
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          for (unsigned int q = 0; q < n_q; ++q)
+            mass(a, b) += fe_values.shape_value(basis[a], q) *
+                          fe_values.shape_value(basis[b], q) * fe_values.JxW(q);
+      mass.gauss_jordan();
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int r = 0; r < n_q; ++r)
+          {
+            double sum = 0.;
+            for (unsigned int a = 0; a < m; ++a)
+              for (unsigned int b = 0; b < m; ++b)
+                sum += fe_values.shape_value(basis[a], q) * mass(a, b) *
+                       fe_values.shape_value(basis[b], r);
+            P(q, r) = sum * fe_values.JxW(r);
+          }
+      return P;
+    }
+
+    template <typename T>
+    void
+    project(const FullMatrix<double> &P,
+            const std::vector<T>     &f,
+            std::vector<T>           &pf)
+    {
+      for (unsigned int q = 0; q < P.m(); ++q)
+        {
+          pf[q] = T();
+          for (unsigned int r = 0; r < P.n(); ++r)
+            pf[q] += P(q, r) * f[r];
+        }
+    }
+
+    // Stress and dissipation density from u and eps_v, for DataOut. They
+    // use eps(u), not its projection: exact for degree 2.
+    class SteadyFields : public DataPostprocessor<2>
+    {
+    public:
+      explicit SteadyFields(const StandardLinearSolid &material)
+        : material(material)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>>              &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          {
+            const auto &v = inputs.solution_values[q];
+            const auto &g = inputs.solution_gradients[q];
+            const auto  strain =
+              strain_tensor(g[0][0], g[1][1], 0.5 * (g[0][1] + g[1][0]));
+            const auto h =
+              material.arm_stress(strain - strain_tensor(v[2], v[3], v[4]));
+            const auto sigma = material.stress(strain, h);
+            computed[q](0)   = sigma[0][0];
+            computed[q](1)   = sigma[1][1];
+            computed[q](2)   = sigma[0][1];
+            computed[q](3)   = material.stress_zz(strain, h);
+            computed[q](4)   = material.dissipation_rate(h);
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"stress_xx",
+                "stress_yy",
+                "stress_xy",
+                "stress_zz",
+                "dissipation_rate"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values | update_gradients;
+      }
+
+    private:
+      const StandardLinearSolid &material;
+    };
+  } // namespace
+
+
+  SteadyStateSolver::SteadyStateSolver(
+    const Parameters::AllParameters         &prm,
+    const Scales                            &scales,
+    const StandardLinearSolid               &material,
+    const InteractionLaw                    &law,
+    const Indenter                          &indenter,
+    const SurfacePostprocessor              &postprocessor,
+    parallel::distributed::Triangulation<2> &triangulation,
+    TimerOutput                             &timer)
+    : prm(prm)
+    , scales(scales)
+    , material(material)
+    , law(law)
+    , indenter(indenter)
+    , postprocessor(postprocessor)
+    , triangulation(triangulation)
+    , timer(timer)
+    , mpi_communicator(triangulation.get_communicator())
+    , pcout(std::cout,
+            dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , fe(FE_Q<dim>(2),
+         dim,
+         FE_DGQ<dim>(prm.sliding.viscous_strain_degree),
+         n_strain_components)
+    , dof_handler(triangulation)
+    , quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
+    , face_quadrature(prm.adhesion.face_quadrature_points)
+    , flux_quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
+    , strain_row_scale(material.arm_modulus())
+  {
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == first_strain_component)
+        strain_basis.push_back(i);
+  }
+
+
+  SteadyStateSolver::~SteadyStateSolver() = default;
+
+
+  void
+  SteadyStateSolver::setup_system()
+  {
+    TimerOutput::Scope t(timer, "steady: setup");
+    dof_handler.distribute_dofs(fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    VectorTools::interpolate_boundary_values(
+      dof_handler,
+      bottom_boundary,
+      Functions::ZeroFunction<dim>(fe.n_components()),
+      constraints,
+      fe.component_mask(FEValuesExtractors::Vector(0)));
+    constraints.close();
+
+    // Everything couples inside a cell; across faces only the upwind flux
+    // of each viscous-strain component.
+    const unsigned int           n_c = fe.n_components();
+    Table<2, DoFTools::Coupling> cell_coupling(n_c, n_c),
+      face_coupling(n_c, n_c);
+    for (unsigned int c = 0; c < n_c; ++c)
+      for (unsigned int d = 0; d < n_c; ++d)
+        {
+          cell_coupling(c, d) = DoFTools::always;
+          face_coupling(c, d) = (c == d && c >= first_strain_component)
+                                  ? DoFTools::always
+                                  : DoFTools::none;
+        }
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_flux_sparsity_pattern(
+      dof_handler,
+      dsp,
+      constraints,
+      false,
+      cell_coupling,
+      face_coupling,
+      dealii::Utilities::MPI::this_mpi_process(mpi_communicator));
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    direct_solver.reset(); // it refers to the old matrix
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(system_rhs);
+    delta_coupling.reinit(system_rhs);
+  }
+
+
+  // u is copied dof by dof (same Q2 element); eps_v is the cell-wise L2
+  // projection of eps(u), the relaxed state (V = 0) of the viscous strain.
+  void
+  SteadyStateSolver::initialize(const DoFHandler<dim>               &u_dofs,
+                                const TrilinosWrappers::MPI::Vector &u,
+                                const double                         delta,
+                                const double                         s)
+  {
+    setup_system();
+    this->delta = delta;
+    this->s     = s;
+    V_hat       = 0.;
+
+    const FiniteElement<dim> &u_fe = u_dofs.get_fe();
+    FEValues<dim> values(fe, quadrature, update_values | update_JxW_values);
+    FEValues<dim> u_values(u_fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+
+    const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       u_local(u_fe.n_dofs_per_cell());
+    std::vector<SymmetricTensor<2, dim>> strain(n_q);
+    // The DG dofs of one component, and their local mass matrix.
+    std::vector<unsigned int> strain_dofs[n_strain_components];
+    for (unsigned int i = 0; i < n; ++i)
+      if (const unsigned int c = fe.system_to_component_index(i).first;
+          c >= first_strain_component)
+        strain_dofs[c - first_strain_component].push_back(i);
+    const unsigned int m = strain_dofs[0].size();
+    FullMatrix<double> mass(m, m);
+    Vector<double>     rhs(m), coefficients(m);
+
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const DoFHandler<dim>::active_cell_iterator u_cell(&triangulation,
+                                                             cell->level(),
+                                                             cell->index(),
+                                                             &u_dofs);
+          values.reinit(cell);
+          u_values.reinit(u_cell);
+          u_cell->get_dof_values(u, u_local);
+          u_values[displacement].get_function_symmetric_gradients(u, strain);
+          cell->get_dof_indices(dofs);
+
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto [base, k] = fe.system_to_base_index(i);
+              if (base.first == 0 && locally_owned_dofs.is_element(dofs[i]))
+                x(dofs[i]) =
+                  u_local(u_fe.component_to_system_index(base.second, k));
+            }
+          for (unsigned int c = 0; c < n_strain_components; ++c)
+            {
+              mass          = 0;
+              rhs           = 0;
+              const auto &d = strain_dofs[c];
+              for (unsigned int q = 0; q < n_q; ++q)
+                for (unsigned int a = 0; a < m; ++a)
+                  {
+                    const double wa = values.shape_value(d[a], q);
+                    rhs(a) +=
+                      strain_component(strain[q], c) * wa * values.JxW(q);
+                    for (unsigned int b = 0; b < m; ++b)
+                      mass(a, b) +=
+                        wa * values.shape_value(d[b], q) * values.JxW(q);
+                  }
+              mass.gauss_jordan();
+              mass.vmult(coefficients, rhs);
+              for (unsigned int a = 0; a < m; ++a)
+                x(dofs[d[a]]) = coefficients(a);
+            }
+        }
+    x.compress(VectorOperation::insert);
+    constraints.distribute(x);
+    solution = x;
+    update_quantities();
+  }
+
+
+  void
+  SteadyStateSolver::hold_force(const double normal_force)
+  {
+    force_control = true;
+    target_force  = normal_force;
+  }
+
+
+  // Residual -R and, if asked, the Jacobian dR/dx of
+  //   R_u(v)  = (C0 eps(u) + C1 (eps(u) - eps_v), eps(v)) - <p(g), v_y>_top
+  //   R_e(w)  = k sum_K [ (V tau eps_v, dw/dx)_K + (eps_v - eps(u), w)_K
+  //             + V tau <eps_v, w>_left(K) - V tau <eps_v^right, w>_right(K) ]
+  // for each strain component: the upwind DG form of
+  // -V tau d(eps_v)/dx + eps_v = eps(u), in which a cell's right face is
+  // its inflow face (material moves towards -x) and eps_v^right the value
+  // on the right neighbour (0 at x = +W/2). k = Einf - E0 makes R_e a force.
+  void
+  SteadyStateSolver::assemble(const bool with_matrix)
+  {
+    TimerOutput::Scope t(timer,
+                         with_matrix ? "steady: assemble"
+                                     : "steady: assemble residual");
+    if (with_matrix)
+      system_matrix = 0;
+    system_rhs = 0;
+    if (force_control)
+      delta_coupling = 0;
+    double force = 0., delta_stiff = 0., abs_force = 0.;
+
+    const double ell =
+      V_hat * scales.eps / scales.tau_ref * material.relaxation_time(); // V tau
+    const double                 k  = strain_row_scale;
+    const SymmetricTensor<4, 2>  C0 = material.tangent({0., 0.});
+    const SymmetricTensor<4, 2> &C1 = material.arm_stiffness();
+
+    const UpdateFlags face_flags =
+      update_values | update_quadrature_points | update_JxW_values;
+    FEValues<dim> fe_values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
+    FEFaceValues<dim> top_values(fe, face_quadrature, face_flags);
+    FEFaceValues<dim> face_values(fe, flux_quadrature, face_flags),
+      neighbor_face_values(fe, flux_quadrature, face_flags);
+    FESubfaceValues<dim> subface_values(fe, flux_quadrature, face_flags),
+      neighbor_subface_values(fe, flux_quadrature, face_flags);
+    const FEValuesExtractors::Vector displacement(0);
+    const FEValuesExtractors::Scalar uy(1);
+    const FEValuesExtractors::Scalar strain_x[n_strain_components] = {
+      FEValuesExtractors::Scalar(first_strain_component),
+      FEValuesExtractors::Scalar(first_strain_component + 1),
+      FEValuesExtractors::Scalar(first_strain_component + 2)};
+
+    const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
+    FullMatrix<double> cell_matrix(n, n), flux_matrix(n, n);
+    Vector<double>     cell_rhs(n), cell_coupling(n);
+    std::vector<types::global_dof_index> dofs(n), neighbor_dofs(n);
+    std::vector<SymmetricTensor<2, dim>> strain(n_q), projected_strain(n_q),
+      grad_phi(n), projected_grad(n), grad_phi_q(n_q), projected_grad_q(n_q);
+    Table<2, SymmetricTensor<2, dim>> grad_phi_table(n_q, n),
+      projected_grad_table(n_q, n);
+    std::vector<double> e[n_strain_components], e_face(n_q);
+    std::vector<double> u_y(face_quadrature.size());
+    std::vector<double> phi(n), phi_x(n), phi_y(n);
+    // Component of each local dof: 0, 1 displacement, 2.. strain.
+    std::vector<unsigned int> component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    for (auto &v : e)
+      v.resize(n_q);
+
+    // The inflow term of the cell's right face: mine is this cell's side,
+    // theirs the right neighbour's, on matching quadrature points.
+    auto inflow = [&](const FEFaceValuesBase<dim>                 &mine,
+                      const FEFaceValuesBase<dim>                 &theirs,
+                      const DoFHandler<dim>::active_cell_iterator &neighbor) {
+      flux_matrix = 0;
+      for (unsigned int c = 0; c < n_strain_components; ++c)
+        {
+          theirs[strain_x[c]].get_function_values(solution, e_face);
+          for (unsigned int q = 0; q < mine.n_quadrature_points; ++q)
+            {
+              Assert(mine.quadrature_point(q).distance(
+                       theirs.quadrature_point(q)) < 1e-8 * scales.R,
+                     ExcInternalError());
+              const double JxW = mine.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                if (component[i] == first_strain_component + c)
+                  {
+                    const double w = mine.shape_value(i, q);
+                    cell_rhs(i) += k * ell * e_face[q] * w * JxW;
+                    if (with_matrix)
+                      for (unsigned int j = 0; j < n; ++j)
+                        if (component[j] == component[i])
+                          flux_matrix(i, j) -=
+                            k * ell * theirs.shape_value(j, q) * w * JxW;
+                  }
+            }
+        }
+      if (with_matrix)
+        {
+          neighbor->get_dof_indices(neighbor_dofs);
+          constraints.distribute_local_to_global(flux_matrix,
+                                                 dofs,
+                                                 neighbor_dofs,
+                                                 system_matrix);
+        }
+    };
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix   = 0;
+          cell_rhs      = 0;
+          cell_coupling = 0;
+          cell->get_dof_indices(dofs);
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          for (unsigned int c = 0; c < n_strain_components; ++c)
+            fe_values[strain_x[c]].get_function_values(solution, e[c]);
+
+          const FullMatrix<double> P =
+            strain_projection(fe_values, strain_basis);
+          project(P, strain, projected_strain);
+          for (unsigned int i = 0; i < n; ++i)
+            if (component[i] < first_strain_component)
+              {
+                for (unsigned int q = 0; q < n_q; ++q)
+                  grad_phi_q[q] =
+                    fe_values[displacement].symmetric_gradient(i, q);
+                project(P, grad_phi_q, projected_grad_q);
+                for (unsigned int q = 0; q < n_q; ++q)
+                  {
+                    grad_phi_table(q, i)       = grad_phi_q[q];
+                    projected_grad_table(q, i) = projected_grad_q[q];
+                  }
+              }
+
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const auto eps_v = strain_tensor(e[0][q], e[1][q], e[2][q]);
+              const SymmetricTensor<2, dim> sigma =
+                C0 * strain[q] + C1 * (projected_strain[q] - eps_v);
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  grad_phi[i]       = grad_phi_table(q, i);
+                  projected_grad[i] = projected_grad_table(q, i);
+                  phi[i]            = fe_values.shape_value(i, q);
+                  phi_x[i]          = fe_values.shape_grad(i, q)[0];
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                if (component[i] < first_strain_component)
+                  {
+                    cell_rhs(i) -= sigma * grad_phi[i] * JxW;
+                    if (with_matrix)
+                      {
+                        const auto C0_i = C0 * grad_phi[i];
+                        const auto C1_i = C1 * grad_phi[i];
+                        for (unsigned int j = 0; j < n; ++j)
+                          cell_matrix(i, j) +=
+                            (component[j] < first_strain_component
+                               ? C0_i * grad_phi[j] + C1_i * projected_grad[j]
+                               : -(C1_i * unit_strain(component[j] -
+                                                      first_strain_component)) *
+                                   phi[j]) *
+                            JxW;
+                      }
+                  }
+                else
+                  {
+                    const unsigned int c =
+                      component[i] - first_strain_component;
+                    const double ec = strain_component(eps_v, c);
+                    cell_rhs(i) -=
+                      k *
+                      (ell * ec * phi_x[i] +
+                       (ec - strain_component(strain[q], c)) * phi[i]) *
+                      JxW;
+                    if (with_matrix)
+                      for (unsigned int j = 0; j < n; ++j)
+                        {
+                          if (component[j] < first_strain_component)
+                            cell_matrix(i, j) -=
+                              k * strain_component(grad_phi[j], c) * phi[i] *
+                              JxW;
+                          else if (component[j] == component[i])
+                            cell_matrix(i, j) +=
+                              k * (ell * phi_x[i] + phi[i]) * phi[j] * JxW;
+                        }
+                  }
+            }
+
+          for (const unsigned int f : cell->face_indices())
+            {
+              const auto face = cell->face(f);
+              if (face->at_boundary() && face->boundary_id() == top_boundary)
+                {
+                  top_values.reinit(cell, f);
+                  top_values[uy].get_function_values(solution, u_y);
+                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                    {
+                      const double g        = gap(indenter,
+                                           scales.eps,
+                                           delta,
+                                           s,
+                                           top_values.quadrature_point(q)[0],
+                                           u_y[q]);
+                      const double traction = law.traction(g);
+                      const double dp_dg    = law.derivative(g);
+                      const double JxW      = top_values.JxW(q);
+                      abs_force += std::abs(traction) * JxW;
+                      force -= traction * JxW;
+                      delta_stiff += dp_dg * JxW;
+                      for (unsigned int i = 0; i < n; ++i)
+                        phi_y[i] = top_values[uy].value(i, q);
+                      for (unsigned int i = 0; i < n; ++i)
+                        {
+                          cell_rhs(i) += traction * phi_y[i] * JxW;
+                          cell_coupling(i) += dp_dg * phi_y[i] * JxW;
+                          if (with_matrix)
+                            for (unsigned int j = 0; j < n; ++j)
+                              cell_matrix(i, j) +=
+                                dp_dg * phi_y[i] * phi_y[j] * JxW;
+                        }
+                    }
+                }
+              if (ell == 0.)
+                continue;
+              // The coarse cells are axis-aligned rectangles in standard
+              // orientation: face 0 is the left (outflow), face 1 the right
+              // (inflow) one; top and bottom faces carry no flux.
+              if (f == 0)
+                {
+                  face_values.reinit(cell, f);
+                  for (unsigned int c = 0; c < n_strain_components; ++c)
+                    {
+                      face_values[strain_x[c]].get_function_values(solution,
+                                                                   e_face);
+                      for (unsigned int q = 0; q < flux_quadrature.size(); ++q)
+                        for (unsigned int i = 0; i < n; ++i)
+                          if (component[i] == first_strain_component + c)
+                            {
+                              const double w   = face_values.shape_value(i, q);
+                              const double JxW = face_values.JxW(q);
+                              cell_rhs(i) -= k * ell * e_face[q] * w * JxW;
+                              if (with_matrix)
+                                for (unsigned int j = 0; j < n; ++j)
+                                  if (component[j] == component[i])
+                                    cell_matrix(i, j) +=
+                                      k * ell * face_values.shape_value(j, q) *
+                                      w * JxW;
+                            }
+                    }
+                }
+              else if (f == 1 && !face->at_boundary())
+                {
+                  const unsigned int nf = cell->neighbor_of_neighbor(f);
+                  if (face->has_children())
+                    for (unsigned int sf = 0; sf < face->n_children(); ++sf)
+                      {
+                        const auto neighbor =
+                          cell->neighbor_child_on_subface(f, sf);
+                        subface_values.reinit(cell, f, sf);
+                        neighbor_face_values.reinit(neighbor, nf);
+                        inflow(subface_values, neighbor_face_values, neighbor);
+                      }
+                  else if (cell->neighbor_is_coarser(f))
+                    {
+                      const auto neighbor = cell->neighbor(f);
+                      const auto [face_no, subface_no] =
+                        cell->neighbor_of_coarser_neighbor(f);
+                      face_values.reinit(cell, f);
+                      neighbor_subface_values.reinit(neighbor,
+                                                     face_no,
+                                                     subface_no);
+                      inflow(face_values, neighbor_subface_values, neighbor);
+                    }
+                  else
+                    {
+                      const auto neighbor = cell->neighbor(f);
+                      face_values.reinit(cell, f);
+                      neighbor_face_values.reinit(neighbor, nf);
+                      inflow(face_values, neighbor_face_values, neighbor);
+                    }
+                }
+            }
+
+          if (force_control)
+            constraints.distribute_local_to_global(cell_coupling,
+                                                   dofs,
+                                                   delta_coupling);
+          if (with_matrix)
+            constraints.distribute_local_to_global(
+              cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
+          else
+            constraints.distribute_local_to_global(cell_rhs, dofs, system_rhs);
+        }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    traction_scale = dealii::Utilities::MPI::sum(abs_force, mpi_communicator);
+    if (force_control)
+      {
+        delta_coupling.compress(VectorOperation::add);
+        force_mismatch =
+          dealii::Utilities::MPI::sum(force, mpi_communicator) - target_force;
+        delta_stiffness =
+          dealii::Utilities::MPI::sum(delta_stiff, mpi_communicator);
+      }
+  }
+
+
+  // Under force control the bordered system of the transient solver
+  // (contact_problem.cc): one factorization, two solves.
+  void
+  SteadyStateSolver::solve_newton_system()
+  {
+    TimerOutput::Scope   t(timer, "steady: linear solve");
+    static SolverControl control(1, 0);
+    direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+      control,
+      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+    direct_solver->initialize(system_matrix);
+    TrilinosWrappers::MPI::Vector x1(locally_owned_dofs, mpi_communicator);
+    direct_solver->solve(x1, system_rhs);
+    delta_update = 0.;
+    if (force_control)
+      {
+        TrilinosWrappers::MPI::Vector x2(locally_owned_dofs, mpi_communicator);
+        direct_solver->solve(x2, delta_coupling);
+        delta_update = (-force_mismatch - (delta_coupling * x1)) /
+                       (delta_stiffness - (delta_coupling * x2));
+        x1.add(-delta_update, x2);
+      }
+    constraints.distribute(x1);
+    newton_update = x1;
+  }
+
+
+  double
+  SteadyStateSolver::residual_norm() const
+  {
+    const double r = system_rhs.l2_norm();
+    return force_control ? std::hypot(r, force_mismatch) : r;
+  }
+
+
+  int
+  SteadyStateSolver::solve_newton()
+  {
+    const double floor = scales.sigma_max * prm.mesh.finest_cell;
+    assemble(true);
+    double residual = residual_norm();
+    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
+      {
+        if (!std::isfinite(residual))
+          return -1;
+        const double tolerance =
+          prm.solver.newton_tolerance * (traction_scale + floor);
+        if (prm.solver.verbose)
+          pcout << "      Newton " << it << ": residual " << residual
+                << " (tolerance " << tolerance << ")" << std::endl;
+        if (residual <= tolerance)
+          return it;
+        if (it == prm.solver.max_newton_iterations)
+          break;
+        solve_newton_system();
+
+        // Backtracking on the residual norm, as in the transient solver.
+        const TrilinosWrappers::MPI::Vector u0(solution);
+        const double                        delta0  = delta;
+        double                              alpha   = 1.;
+        bool                                reduced = false;
+        for (unsigned int k = 0; k < (prm.solver.line_search ? 8 : 1); ++k)
+          {
+            TrilinosWrappers::MPI::Vector trial(locally_owned_dofs,
+                                                mpi_communicator);
+            trial = u0;
+            trial.add(alpha, newton_update);
+            solution = trial;
+            delta    = delta0 + alpha * delta_update;
+            assemble(false);
+            const double r = residual_norm();
+            if (std::isfinite(r) &&
+                (r < (1. - 1e-4 * alpha) * residual || !prm.solver.line_search))
+              {
+                reduced = true;
+                break;
+              }
+            alpha *= 0.5;
+          }
+        if (!reduced)
+          return -1;
+        assemble(true);
+        residual = residual_norm();
+      }
+    return -1;
+  }
+
+
+  bool
+  SteadyStateSolver::adapt_mesh()
+  {
+    TimerOutput::Scope t(timer, "steady: adapt mesh");
+    auto               edges = postprocessor.faces_in_gap_band(dof_handler,
+                                                 solution,
+                                                 delta,
+                                                 s,
+                                                 prm.mesh.edge_gap_low,
+                                                 prm.mesh.edge_gap_high);
+    if (edges.empty())
+      edges.emplace_back(s, s);
+    if (!flag_cells_near_edges(triangulation, edges, prm))
+      return false;
+
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      transfer(dof_handler);
+    transfer.prepare_for_coarsening_and_refinement(solution);
+    triangulation.execute_coarsening_and_refinement();
+    setup_system();
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    transfer.interpolate(x);
+    constraints.distribute(x);
+    solution = x;
+    return true;
+  }
+
+
+  bool
+  SteadyStateSolver::continue_to(const double target)
+  {
+    // The first speed: relaxation length V tau a tenth of the finest cell,
+    // so that the relaxed start is close to its solution.
+    const double first =
+      0.1 * prm.mesh.finest_cell / material.relaxation_time();
+    const double largest_step = std::log(prm.sliding.continuation_factor);
+    double       step         = largest_step;
+    while (V_hat != target)
+      {
+        double next;
+        if (V_hat == 0.)
+          next = std::min(target, first);
+        else if (target > V_hat)
+          next = std::min(target, V_hat * std::exp(step));
+        else
+          next = std::max(target, V_hat * std::exp(-step));
+
+        const TrilinosWrappers::MPI::Vector backup(solution);
+        const double                        delta0 = delta, V0 = V_hat;
+        V_hat   = next;
+        int its = solve_newton();
+        if (its < 0)
+          {
+            solution = backup;
+            delta    = delta0;
+            V_hat    = V0;
+            step *= 0.5;
+            if (step < std::log(1.01))
+              {
+                pcout << "Steady state: Newton failed at V_hat = " << next
+                      << " even in steps of 1 %; last converged V_hat = " << V0
+                      << std::endl;
+                return false;
+              }
+            continue;
+          }
+        for (unsigned int cycle = 0; cycle < prm.mesh.max_adaptation_cycles;
+             ++cycle)
+          {
+            if (!adapt_mesh())
+              break;
+            const int more = solve_newton();
+            if (more < 0)
+              {
+                pcout << "Steady state: Newton failed at V_hat = " << V_hat
+                      << " after adapting the mesh" << std::endl;
+                return false;
+              }
+            its += more;
+          }
+        total_newton_iterations += its;
+        update_quantities();
+        pcout << "  steady V_hat " << std::setw(11) << V_hat << "  delta_hat "
+              << std::setw(10) << delta / scales.eps << "  F_hat "
+              << std::setw(11) << last_quantities.normal_force / scales.force
+              << "  mu " << std::setw(11)
+              << std::abs(last_quantities.tangential_force /
+                          last_quantities.normal_force)
+              << "  L_hat " << std::setw(11)
+              << last_quantities.contact_length / scales.R << "  Newton " << its
+              << "  dofs " << dof_handler.n_dofs() << std::endl;
+        step = std::min(largest_step, 2. * step);
+      }
+    return true;
+  }
+
+
+  void
+  SteadyStateSolver::update_quantities()
+  {
+    last_quantities = postprocessor.integrate(dof_handler, solution, delta, s);
+  }
+
+
+  double
+  SteadyStateSolver::dissipation_rate() const
+  {
+    FEValues<dim> fe_values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size()),
+      projected_strain(quadrature.size());
+    std::vector<Vector<double>> values(quadrature.size(),
+                                       Vector<double>(fe.n_components()));
+    double                      rate = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          fe_values.get_function_values(solution, values);
+          project(strain_projection(fe_values, strain_basis),
+                  strain,
+                  projected_strain);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const auto &v = values[q];
+              rate +=
+                material.dissipation_rate(material.arm_stress(
+                  projected_strain[q] - strain_tensor(v[2], v[3], v[4]))) *
+                fe_values.JxW(q);
+            }
+        }
+    return dealii::Utilities::MPI::sum(rate, mpi_communicator);
+  }
+
+
+  void
+  SteadyStateSolver::write_profile(const std::string &path) const
+  {
+    write_profile_csv(path,
+                      postprocessor.profile(dof_handler, solution, delta, s),
+                      scales,
+                      "steady state, V_hat = " + CsvTable::format(V_hat) +
+                        ", delta_hat = " + CsvTable::format(delta),
+                      mpi_communicator);
+  }
+
+
+  void
+  SteadyStateSolver::write_fields(OutputWriter      &writer,
+                                  const unsigned int counter) const
+  {
+    TimerOutput::Scope       t(timer, "output");
+    std::vector<std::string> names{"displacement",
+                                   "displacement",
+                                   "viscous_strain_xx",
+                                   "viscous_strain_yy",
+                                   "viscous_strain_xy"};
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(fe.n_components(),
+                     DataComponentInterpretation::component_is_scalar);
+    interpretation[0] = interpretation[1] =
+      DataComponentInterpretation::component_is_part_of_vector;
+    const SteadyFields fields(material);
+    DataOut<dim>       data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(solution,
+                             names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    data_out.add_data_vector(solution, fields);
+    data_out.build_patches(2);
+    writer.write_pvtu(data_out, "steady", counter, V_hat);
+  }
+} // namespace viscoslide

@@ -1211,7 +1211,34 @@ namespace viscoslide
     pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control, by continuation from the "
           << "relaxed state" << std::endl;
-    const bool converged = steady.continue_to(prm.sliding.speed);
+    CsvTable   table(writer.path("continuation.csv"),
+                   {"V_hat",
+                      "delta_hat",
+                      "F_n_hat",
+                      "F_t_hat",
+                      "mu",
+                      "mu_energy",
+                      "L_hat",
+                      "newton_iterations",
+                      "n_dofs"},
+                   version_string() +
+                     "; time unit: " + prm.material.time_constant + " time",
+                   mpi_communicator);
+    const bool converged = steady.continue_to(prm.sliding.speed, [&] {
+      const auto  &q  = steady.quantities();
+      const double V  = steady.speed() * scales.eps / scales.tau_ref;
+      const double Fn = q.normal_force;
+      using F         = CsvTable;
+      table.add_row({F::format(steady.speed()),
+                     F::format(steady.approach() / scales.eps),
+                     F::format(Fn / scales.force),
+                     F::format(q.tangential_force / scales.force),
+                     F::format(std::abs(q.tangential_force / Fn)),
+                     F::format(std::abs(steady.dissipation_rate() / V / Fn)),
+                     F::format(q.contact_length / scales.R),
+                     std::to_string(steady.newton_iterations()),
+                     std::to_string(steady.n_dofs())});
+    });
     write_steady_state(steady.speed(),
                        steady.approach(),
                        steady.quantities(),

@@ -40,7 +40,8 @@ namespace viscoslide
   {
     const double W = prm.geometry.domain_width, H = prm.geometry.height();
     const double coarse_width = W / n_coarse_cells(W, W, H);
-    const int    max_level    = static_cast<int>(
+    const std::vector<std::pair<double, double>> whole_surface{{-W / 2, W / 2}};
+    const int                                    max_level = static_cast<int>(
       std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
 
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -48,7 +49,8 @@ namespace viscoslide
         {
           const auto box = cell->bounding_box();
           double     d   = std::numeric_limits<double>::max();
-          for (const auto &[a, b] : edges)
+          for (const auto &[a, b] :
+               prm.mesh.uniform_surface ? whole_surface : edges)
             {
               const double dx =
                 std::max({0., a - box.upper_bound(0), box.lower_bound(0) - b});

@@ -356,6 +356,13 @@ namespace viscoslide
                         Patterns::Integer(0),
                         "How often a step may be re-solved on a mesh adapted "
                         "to its own solution. 0 freezes the initial mesh.");
+      prm.declare_entry("Uniform surface",
+                        "false",
+                        Patterns::Bool(),
+                        "Refine the whole top surface to the finest cell "
+                        "(grading with depth only) instead of following the "
+                        "contact edges: the reference for checking the "
+                        "adaptive mesh, at a much higher cost.");
       prm.leave_subsection();
     }
 
@@ -368,6 +375,7 @@ namespace viscoslide
       edge_gap_low          = prm.get_double("Edge gap lower");
       edge_gap_high         = prm.get_double("Edge gap upper");
       max_adaptation_cycles = prm.get_integer("Adaptation cycles per step");
+      uniform_surface       = prm.get_bool("Uniform surface");
       prm.leave_subsection();
       require(finest_cell > 0,
               entry("Mesh", "Finest surface cell", finest_cell) +

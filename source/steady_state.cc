@@ -766,7 +766,8 @@ namespace viscoslide
 
 
   bool
-  SteadyStateSolver::continue_to(const double target)
+  SteadyStateSolver::continue_to(const double                 target,
+                                 const std::function<void()> &on_converged)
   {
     // The first speed: relaxation length V tau a tenth of the finest cell,
     // so that the relaxed start is close to its solution.
@@ -817,7 +818,7 @@ namespace viscoslide
               }
             its += more;
           }
-        total_newton_iterations += its;
+        last_newton_iterations = its;
         update_quantities();
         pcout << "  steady V_hat " << std::setw(11) << V_hat << "  delta_hat "
               << std::setw(10) << delta / scales.eps << "  F_hat "
@@ -828,6 +829,7 @@ namespace viscoslide
               << "  L_hat " << std::setw(11)
               << last_quantities.contact_length / scales.R << "  Newton " << its
               << "  dofs " << dof_handler.n_dofs() << std::endl;
+        on_converged();
         step = std::min(largest_step, 2. * step);
       }
     return true;

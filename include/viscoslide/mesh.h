@@ -29,7 +29,8 @@ namespace viscoslide
   // finest surface cell at the contact edges (x-intervals on the surface)
   // and grows as Mesh grading x distance away from them. Cells are refined
   // below their desired level and coarsened only two levels above it, so
-  // that a moving edge does not make the mesh flicker. Returns whether any
+  // that a moving edge does not make the mesh flicker. With Mesh/Uniform
+  // surface the whole top counts as an edge. Returns whether any
   // cell on any process will change.
   bool
   flag_cells_near_edges(parallel::distributed::Triangulation<2> &triangulation,

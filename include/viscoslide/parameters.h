@@ -101,6 +101,7 @@ namespace viscoslide
       double       edge_gap_low;
       double       edge_gap_high;
       unsigned int max_adaptation_cycles;
+      bool         uniform_surface;
 
       static void
       declare(ParameterHandler &prm);

@@ -36,6 +36,7 @@
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
 
+#include <functional>
 #include <memory>
 
 namespace viscoslide
@@ -76,7 +77,9 @@ namespace viscoslide
     // if a step could not be solved; the state is then the last converged
     // one, at speed().
     bool
-    continue_to(double V_hat);
+    continue_to(
+      double                       V_hat,
+      const std::function<void()> &on_converged = [] {});
 
     double
     speed() const
@@ -96,10 +99,12 @@ namespace viscoslide
     // integral of D over the block
     double
     dissipation_rate() const;
+    // Newton iterations of the last converged speed (re-solves after mesh
+    // adaptation included).
     unsigned int
     newton_iterations() const
     {
-      return total_newton_iterations;
+      return last_newton_iterations;
     }
     types::global_dof_index
     n_dofs() const
@@ -172,7 +177,7 @@ namespace viscoslide
            traction_scale = 0.;
 
     SurfaceQuantities last_quantities{};
-    unsigned int      total_newton_iterations = 0;
+    unsigned int      last_newton_iterations = 0;
   };
 } // namespace viscoslide
 

@@ -771,8 +771,7 @@ namespace viscoslide
   {
     // The first speed: relaxation length V tau a tenth of the finest cell,
     // so that the relaxed start is close to its solution.
-    const double first =
-      0.1 * prm.mesh.finest_cell / material.relaxation_time();
+    double first = 0.1 * prm.mesh.finest_cell / material.relaxation_time();
     const double largest_step = std::log(prm.sliding.continuation_factor);
     double       step         = largest_step;
     while (V_hat != target)
@@ -795,6 +794,8 @@ namespace viscoslide
             delta    = delta0;
             V_hat    = V0;
             step *= 0.5;
+            if (V0 == 0.)
+              first *= std::exp(-step); // the first speed has no ratio
             if (step < std::log(1.01))
               {
                 pcout << "Steady state: Newton failed at V_hat = " << next

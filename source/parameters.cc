@@ -133,7 +133,7 @@ namespace viscoslide
                         "Surface traction-gap law on the top boundary. "
                         "'lennard-jones': the 3-9 law of physics.md. "
                         "'repulsive': only its repulsive branch (g < eps), "
-                        "rounded to zero slope over [0.9 eps, eps] so that "
+                        "rounded to zero slope over [0.98 eps, eps] so that "
                         "Newton converges, i.e. frictionless contact "
                         "without adhesion.");
       prm.declare_entry("Tabor parameter",

@@ -1211,45 +1211,49 @@ namespace viscoslide
     pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control, by continuation from the "
           << "relaxed state" << std::endl;
-    CsvTable   table(writer.path("continuation.csv"),
+    CsvTable table(writer.path("continuation.csv"),
                    {"V_hat",
-                      "delta_hat",
-                      "F_n_hat",
-                      "F_t_hat",
-                      "mu",
-                      "mu_energy",
-                      "L_hat",
-                      "newton_iterations",
-                      "n_dofs"},
+                    "delta_hat",
+                    "F_n_hat",
+                    "F_t_hat",
+                    "mu",
+                    "mu_energy",
+                    "L_hat",
+                    "newton_iterations",
+                    "n_dofs"},
                    version_string() +
                      "; time unit: " + prm.material.time_constant + " time",
                    mpi_communicator);
-    const bool converged = steady.continue_to(prm.sliding.speed, [&] {
-      const auto  &q  = steady.quantities();
-      const double V  = steady.speed() * scales.eps / scales.tau_ref;
+    // The last converged speed, so that a failure reports it and not the
+    // unconverged state.
+    double            V_hat = 0., delta = steady.approach(), rate = 0.;
+    SurfaceQuantities q         = steady.quantities();
+    const bool        converged = steady.continue_to(prm.sliding.speed, [&] {
+      V_hat           = steady.speed();
+      delta           = steady.approach();
+      q               = steady.quantities();
+      rate            = steady.dissipation_rate();
+      const double V  = V_hat * scales.eps / scales.tau_ref;
       const double Fn = q.normal_force;
       using F         = CsvTable;
-      table.add_row({F::format(steady.speed()),
-                     F::format(steady.approach() / scales.eps),
+      table.add_row({F::format(V_hat),
+                     F::format(delta / scales.eps),
                      F::format(Fn / scales.force),
                      F::format(q.tangential_force / scales.force),
                      F::format(std::abs(q.tangential_force / Fn)),
-                     F::format(std::abs(steady.dissipation_rate() / V / Fn)),
+                     F::format(std::abs(rate / V / Fn)),
                      F::format(q.contact_length / scales.R),
                      std::to_string(steady.newton_iterations()),
                      std::to_string(steady.n_dofs())});
     });
-    write_steady_state(steady.speed(),
-                       steady.approach(),
-                       steady.quantities(),
-                       steady.dissipation_rate(),
-                       converged,
-                       0.,
-                       "steady-state");
-    steady.write_profile(writer.path("surface_profile_steady.csv"));
-    if (prm.output.write_fields)
-      steady.write_fields(writer, 0);
-    if (!converged)
+    write_steady_state(V_hat, delta, q, rate, converged, 0., "steady-state");
+    if (converged)
+      {
+        steady.write_profile(writer.path("surface_profile_steady.csv"));
+        if (prm.output.write_fields)
+          steady.write_fields(writer, 0);
+      }
+    else
       throw std::runtime_error(
         "The steady-state solver did not converge at V_hat = " +
         std::to_string(prm.sliding.speed) +

@@ -60,7 +60,8 @@ namespace viscoslide
 
     // Starts from a relaxed equilibrium: the displacement u of a
     // FESystem(FE_Q(2), 2) on the same triangulation, at approach delta with
-    // the indenter at s; eps_v = eps(u) there.
+    // the indenter at s; eps_v is the cell-wise L2 projection of eps(u),
+    // the relaxed state.
     void
     initialize(const DoFHandler<dim>               &displacement_dofs,
                const TrilinosWrappers::MPI::Vector &u,

@@ -282,16 +282,20 @@ def _peak(m, h, pressure, K=200):
     g = lambda th: pressure(m + h * math.cos(th))
     ths = [math.pi * (k + 0.5) / K for k in range(K)]
     k = max(range(K), key=lambda k: g(ths[k]))
-    a, b = ths[k] - math.pi / K, ths[k] + math.pi / K
+    th = _golden_max(g, ths[k] - math.pi / K, ths[k] + math.pi / K)
+    return g(th), m + h * math.cos(th)
+
+
+def _golden_max(f, a, b, n=40):
+    """argmax of a unimodal f on [a, b] by golden-section search."""
     r = (math.sqrt(5) - 1) / 2
-    for _ in range(40):
+    for _ in range(n):
         c, d = b - r * (b - a), a + r * (b - a)
-        if g(c) > g(d):
+        if f(c) > f(d):
             b = d
         else:
             a = c
-    th = (a + b) / 2
-    return g(th), m + h * math.cos(th)
+    return (a + b) / 2
 
 
 def hunter(P, R, E0_star, Einf_star, V_tau_c, method='closed'):
@@ -357,14 +361,7 @@ if __name__ == '__main__':
 
     # maximum of mu(V): golden section in log(V tau_c/a0)
     f = lambda q: hunter(P, R, E0s, Eis, a0 * math.exp(q))['mu']
-    a, b, r = math.log(0.1), math.log(30.0), (math.sqrt(5) - 1) / 2
-    for _ in range(40):
-        c, d = b - r * (b - a), a + r * (b - a)
-        if f(c) > f(d):
-            b = d
-        else:
-            a = c
-    q = (a + b) / 2
+    q = _golden_max(f, math.log(0.1), math.log(30.0))
     print('\nmu(V) peak (E0/Einf = %g): V tau_c/a0 = %.4f, mu_max = %.5e (mu_max R/a0 = %.4f);'
           ' numeric there: mu = %.5e' % (ratio, math.exp(q), f(q), f(q) * R / a0,
                                          hunter(P, R, E0s, Eis, a0 * math.exp(q), 'numeric')['mu']))

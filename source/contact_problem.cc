@@ -24,6 +24,7 @@
 
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/mesh.h>
+#include <viscoslide/newton.h>
 #include <viscoslide/steady_state.h>
 
 #include <cmath>
@@ -524,66 +525,31 @@ namespace viscoslide
     const double floor =
       scales.sigma_max * prm.mesh.finest_cell; // one loaded finest cell
     TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
+    double                        delta0 = current.delta;
 
-    assemble(true, surface_damping);
-    double residual = residual_norm();
-    for (unsigned int it = 0; it <= max_iterations; ++it)
-      {
-        if (!std::isfinite(residual))
-          {
-            pcout << "      Newton: residual is " << residual
-                  << " at iteration " << it << "\n";
-            return -1;
-          }
-        if (prm.solver.verbose)
-          pcout << "      Newton " << it << ": residual " << residual
-                << " (tolerance "
-                << prm.solver.newton_tolerance * (traction_scale + floor)
-                << ", damping " << surface_damping << ")" << std::endl;
-        if (residual <= prm.solver.newton_tolerance * (traction_scale + floor))
-          return it;
-        if (it == max_iterations)
-          break;
-
-        solve_newton_system();
-        if (!std::isfinite(newton_update.l2_norm()))
-          {
-            pcout << "      Newton: linear solve gave a non-finite update at "
-                     "iteration "
-                  << it << "\n";
-            return -1;
-          }
-
-        // Backtracking on the residual norm; accept the first step that
-        // reduces it, else give up (the caller cuts the step).
-        u0                   = solution;
-        const double delta0  = current.delta;
-        double       alpha   = 1.;
-        bool         reduced = false;
-        for (unsigned int k = 0; k < (prm.solver.line_search ? 8 : 1); ++k)
-          {
-            TrilinosWrappers::MPI::Vector trial(u0);
-            trial.add(alpha, newton_update);
-            solution      = trial;
-            current.delta = delta0 + alpha * delta_update;
-            assemble(false, surface_damping);
-            const double r = residual_norm();
-            if (std::isfinite(r) &&
-                (r < (1. - 1e-4 * alpha) * residual || !prm.solver.line_search))
-              {
-                reduced = true;
-                break;
-              }
-            alpha *= 0.5;
-          }
-        if (prm.solver.verbose)
-          pcout << "        line search: alpha = " << alpha << std::endl;
-        if (!reduced)
-          return -1;
-        assemble(true, surface_damping);
-        residual = residual_norm();
-      }
-    return -1;
+    NewtonProblem problem;
+    problem.assemble      = [&](const bool m) { assemble(m, surface_damping); };
+    problem.residual_norm = [&] { return residual_norm(); };
+    problem.tolerance     = [&] {
+      return prm.solver.newton_tolerance * (traction_scale + floor);
+    };
+    problem.compute_update   = [&] { solve_newton_system(); };
+    problem.update_norm      = [&] { return newton_update.l2_norm(); };
+    problem.remember_iterate = [&] {
+      u0     = solution;
+      delta0 = current.delta;
+    };
+    problem.step = [&](const double alpha) {
+      TrilinosWrappers::MPI::Vector trial(u0);
+      trial.add(alpha, newton_update);
+      solution      = trial;
+      current.delta = delta0 + alpha * delta_update;
+    };
+    return newton(problem,
+                  max_iterations,
+                  prm.solver.line_search,
+                  prm.solver.verbose,
+                  pcout);
   }
 
 

@@ -18,6 +18,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <viscoslide/mesh.h>
+#include <viscoslide/newton.h>
 #include <viscoslide/steady_state.h>
 
 #include <cmath>
@@ -688,52 +689,32 @@ namespace viscoslide
   SteadyStateSolver::solve_newton()
   {
     const double floor = scales.sigma_max * prm.mesh.finest_cell;
-    assemble(true);
-    double residual = residual_norm();
-    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
-      {
-        if (!std::isfinite(residual))
-          return -1;
-        const double tolerance =
-          prm.solver.newton_tolerance * (traction_scale + floor);
-        if (prm.solver.verbose)
-          pcout << "      Newton " << it << ": residual " << residual
-                << " (tolerance " << tolerance << ")" << std::endl;
-        if (residual <= tolerance)
-          return it;
-        if (it == prm.solver.max_newton_iterations)
-          break;
-        solve_newton_system();
+    TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
+    double                        delta0 = delta;
 
-        // Backtracking on the residual norm, as in the transient solver.
-        const TrilinosWrappers::MPI::Vector u0(solution);
-        const double                        delta0  = delta;
-        double                              alpha   = 1.;
-        bool                                reduced = false;
-        for (unsigned int k = 0; k < (prm.solver.line_search ? 8 : 1); ++k)
-          {
-            TrilinosWrappers::MPI::Vector trial(locally_owned_dofs,
-                                                mpi_communicator);
-            trial = u0;
-            trial.add(alpha, newton_update);
-            solution = trial;
-            delta    = delta0 + alpha * delta_update;
-            assemble(false);
-            const double r = residual_norm();
-            if (std::isfinite(r) &&
-                (r < (1. - 1e-4 * alpha) * residual || !prm.solver.line_search))
-              {
-                reduced = true;
-                break;
-              }
-            alpha *= 0.5;
-          }
-        if (!reduced)
-          return -1;
-        assemble(true);
-        residual = residual_norm();
-      }
-    return -1;
+    NewtonProblem problem;
+    problem.assemble      = [&](const bool m) { assemble(m); };
+    problem.residual_norm = [&] { return residual_norm(); };
+    problem.tolerance     = [&] {
+      return prm.solver.newton_tolerance * (traction_scale + floor);
+    };
+    problem.compute_update   = [&] { solve_newton_system(); };
+    problem.update_norm      = [&] { return newton_update.l2_norm(); };
+    problem.remember_iterate = [&] {
+      u0     = solution;
+      delta0 = delta;
+    };
+    problem.step = [&](const double alpha) {
+      TrilinosWrappers::MPI::Vector trial(u0);
+      trial.add(alpha, newton_update);
+      solution = trial;
+      delta    = delta0 + alpha * delta_update;
+    };
+    return newton(problem,
+                  prm.solver.max_newton_iterations,
+                  prm.solver.line_search,
+                  prm.solver.verbose,
+                  pcout);
   }
 
 

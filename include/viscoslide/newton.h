@@ -1,0 +1,43 @@
+// Newton's method with backtracking on the residual norm, shared by the
+// transient and the steady-state solvers.
+#ifndef viscoslide_newton_h
+#define viscoslide_newton_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <functional>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  // What Newton's method needs of a problem. The iterate includes delta
+  // under force control.
+  struct NewtonProblem
+  {
+    // System residual, and the Jacobian if asked.
+    std::function<void(bool with_matrix)> assemble;
+    std::function<double()>               residual_norm;
+    std::function<double()>               tolerance;
+    // The Newton update from the assembled system.
+    std::function<void()> compute_update;
+    // The update's norm, to catch a linear solve that gave Inf/NaN.
+    std::function<double()> update_norm;
+    // Remember the iterate a line search starts from ...
+    std::function<void()> remember_iterate;
+    // ... and set the iterate to it plus alpha times the update.
+    std::function<void(double alpha)> step;
+  };
+
+  // Returns the iterations used, or -1: residual or update not finite, no
+  // reduction along the update (with line search: within 8 halvings), or
+  // no convergence within max_iterations.
+  int
+  newton(const NewtonProblem &problem,
+         unsigned int         max_iterations,
+         bool                 line_search,
+         bool                 verbose,
+         ConditionalOStream  &out);
+} // namespace viscoslide
+
+#endif

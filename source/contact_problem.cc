@@ -23,6 +23,8 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <viscoslide/contact_problem.h>
+
+#include <cstdio>
 #include <viscoslide/mesh.h>
 #include <viscoslide/newton.h>
 #include <viscoslide/steady_state.h>
@@ -275,9 +277,9 @@ namespace viscoslide
   //   R(u)(v) = (sigma(u), eps(v)) - <p_LJ(g(u)), v_y>_top
   //             + c <u_y - u_y^anchor, v_y>_top.
   // The last term only acts during relaxation after an instability
-  // (surface_damping = c > 0).
+  // (surface_damping = c > 0, see relax()).
   void
-  ContactProblem::assemble(const bool with_matrix, const double surface_damping)
+  ContactProblem::assemble(const bool with_matrix)
   {
     TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
     if (with_matrix)
@@ -512,41 +514,48 @@ namespace viscoslide
   }
 
 
-  int
-  ContactProblem::solve_newton(const LoadState &target,
-                               const double     surface_damping)
+  NewtonProblem
+  ContactProblem::newton_problem(TrilinosWrappers::MPI::Vector &u0,
+                                 double                        &delta0)
   {
-    // A damped pseudo-step that needs many iterations is too long: fail
-    // early and let relax_to_equilibrium() shorten it.
-    const unsigned int max_iterations =
-      surface_damping > 0 ? std::min(12u, prm.solver.max_newton_iterations)
-                          : prm.solver.max_newton_iterations;
-    current = target;
     const double floor =
       scales.sigma_max * prm.mesh.finest_cell; // one loaded finest cell
-    TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
-    double                        delta0 = current.delta;
-
     NewtonProblem problem;
-    problem.assemble      = [&](const bool m) { assemble(m, surface_damping); };
-    problem.residual_norm = [&] { return residual_norm(); };
-    problem.tolerance     = [&] {
+    problem.assemble      = [this](const bool m) { assemble(m); };
+    problem.residual_norm = [this] { return residual_norm(); };
+    problem.tolerance     = [this, floor] {
       return prm.solver.newton_tolerance * (traction_scale + floor);
     };
-    problem.compute_update   = [&] { solve_newton_system(); };
-    problem.update_norm      = [&] { return newton_update.l2_norm(); };
-    problem.remember_iterate = [&] {
+    problem.compute_update   = [this] { solve_newton_system(); };
+    problem.update_norm      = [this] { return newton_update.l2_norm(); };
+    problem.update_max_norm  = [this] { return newton_update.linfty_norm(); };
+    problem.remember_iterate = [this, &u0, &delta0] {
       u0     = solution;
       delta0 = current.delta;
     };
-    problem.step = [&](const double alpha) {
+    problem.step = [this, &u0, &delta0](const double alpha) {
       TrilinosWrappers::MPI::Vector trial(u0);
       trial.add(alpha, newton_update);
       solution      = trial;
       current.delta = delta0 + alpha * delta_update;
     };
-    return newton(problem,
-                  max_iterations,
+    problem.set_dashpot = [this](const double c) {
+      surface_damping = c;
+      if (c > 0)
+        relaxation_anchor = solution;
+    };
+    return problem;
+  }
+
+
+  int
+  ContactProblem::solve_newton(const LoadState &target)
+  {
+    current = target;
+    TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
+    double                        delta0 = current.delta;
+    return newton(newton_problem(u0, delta0),
+                  prm.solver.max_newton_iterations,
                   prm.solver.line_search,
                   prm.solver.verbose,
                   pcout);
@@ -554,59 +563,26 @@ namespace viscoslide
 
 
   // After a jump-in or jump-out no equilibrium is near the last one, and
-  // Newton cannot get there. Pseudo-transient continuation (Kelley and
-  // Keyes 1998) follows the fictitious dynamics of a surface dashpot c:
-  // each pseudo-step is one Newton step on (K + c M_top) du = -R(u). While
-  // the surface travels the residual grows, so c is steered by the motion
-  // instead: pseudo-steps that move the surface by more than half an eps
-  // stiffen the dashpot, shorter ones soften it, and as the new branch is
-  // reached c vanishes and the iteration becomes plain Newton. Only an
-  // undamped equilibrium is accepted.
+  // Newton cannot get there: relax() follows the fictitious dynamics of a
+  // surface dashpot instead. Its initial stiffness is that of the traction
+  // law's wall, and a pseudo-step should move the surface by about half
+  // an eps.
   int
   ContactProblem::relax_to_equilibrium(const LoadState &target)
   {
     TimerOutput::Scope t(timer, "relaxation");
-    current            = target;
-    const double c0    = 16. * scales.dgamma / (scales.eps * scales.eps);
-    const double floor = scales.sigma_max * prm.mesh.finest_cell;
-    double       c     = c0;
+    current = target;
     relaxation_anchor.reinit(solution);
     TrilinosWrappers::MPI::Vector u0(locally_owned_dofs, mpi_communicator);
-
-    assemble(false, 0.);
-    double residual = residual_norm();
-    for (unsigned int k = 0; k < prm.solver.max_relaxation_steps; ++k)
-      {
-        if (residual <= prm.solver.newton_tolerance * (traction_scale + floor))
-          return k;
-        relaxation_anchor = solution; // the dashpot term vanishes at u
-        assemble(true, c);
-        solve_newton_system();
-        u0                                   = solution;
-        const double                  delta0 = current.delta;
-        TrilinosWrappers::MPI::Vector trial(u0);
-        trial.add(1., newton_update);
-        solution      = trial;
-        current.delta = delta0 + delta_update;
-        assemble(false, 0.);
-        const double r = residual_norm();
-        if (prm.solver.verbose)
-          pcout << "      relaxation " << k << ": residual " << r
-                << ", dashpot " << c << std::endl;
-        if (!std::isfinite(r))
-          {
-            solution      = u0;
-            current.delta = delta0;
-            c *= 4.;
-            if (c > 1e10 * c0)
-              return -1;
-            continue;
-          }
-        const double move = newton_update.linfty_norm() / (0.5 * scales.eps);
-        c = std::clamp(c * std::clamp(move, 0.25, 4.), 1e-14 * c0, 1e10 * c0);
-        residual = r;
-      }
-    return -1;
+    double                        delta0 = current.delta;
+    const int                     steps  = relax(newton_problem(u0, delta0),
+                            16. * scales.dgamma / (scales.eps * scales.eps),
+                            0.5 * scales.eps,
+                            prm.solver.max_relaxation_steps,
+                            prm.solver.verbose,
+                            pcout);
+    surface_damping                      = 0.;
+    return steps;
   }
 
 
@@ -986,6 +962,13 @@ namespace viscoslide
     data_out.add_data_vector(history_dof_handler,
                              history[dissipated_energy],
                              "dissipated_energy");
+    // The paper's Fig. 5 shows it in units of dgamma/L (L the present
+    // contact length); zero while there is no contact.
+    TrilinosWrappers::MPI::Vector energy_hat(history[dissipated_energy]);
+    energy_hat *= last_quantities.contact_length / scales.dgamma;
+    data_out.add_data_vector(history_dof_handler,
+                             energy_hat,
+                             "dissipated_energy_hat");
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.add_data_vector(level, "level");
     data_out.build_patches(2);
@@ -1193,8 +1176,8 @@ namespace viscoslide
     // The last converged speed, so that a failure reports it and not the
     // unconverged state.
     double            V_hat = 0., delta = steady.approach(), rate = 0.;
-    SurfaceQuantities q         = steady.quantities();
-    const bool        converged = steady.continue_to(prm.sliding.speed, [&] {
+    SurfaceQuantities q            = steady.quantities();
+    auto              on_converged = [&] {
       V_hat           = steady.speed();
       delta           = steady.approach();
       q               = steady.quantities();
@@ -1211,19 +1194,40 @@ namespace viscoslide
                      F::format(q.contact_length / scales.R),
                      std::to_string(steady.newton_iterations()),
                      std::to_string(steady.n_dofs())});
-    });
-    write_steady_state(V_hat, delta, q, rate, converged, 0., "steady-state");
-    if (converged)
+    };
+
+    // A listed speed that cannot be reached gets its row with steady = 0
+    // (values of the last converged speed, whose V_hat it shows), and the
+    // continuation goes on from there to the next listed speed.
+    const auto &speeds = prm.sliding.speeds;
+    std::string failed;
+    for (unsigned int k = 0; k < speeds.size(); ++k)
       {
-        steady.write_profile(writer.path("surface_profile_steady.csv"));
+        const bool converged = steady.continue_to(speeds[k], on_converged);
+        write_steady_state(
+          V_hat, delta, q, rate, converged, 0., "steady-state");
+        if (!converged)
+          {
+            failed += (failed.empty() ? "" : ", ") + std::to_string(speeds[k]);
+            continue;
+          }
+        char suffix[16];
+        std::snprintf(suffix, sizeof(suffix), "_%02u", k);
+        // With a list, a profile per speed; the last one also under the
+        // name the single-speed run uses.
+        if (speeds.size() > 1)
+          steady.write_profile(writer.path("surface_profile_steady" +
+                                           std::string(suffix) + ".csv"));
+        if (k + 1 == speeds.size())
+          steady.write_profile(writer.path("surface_profile_steady.csv"));
         if (prm.output.write_fields)
-          steady.write_fields(writer, 0);
+          steady.write_fields(writer, k);
       }
-    else
+    if (!failed.empty())
       throw std::runtime_error(
-        "The steady-state solver did not converge at V_hat = " +
-        std::to_string(prm.sliding.speed) +
-        "; steady_state.csv holds the last converged speed with steady = 0");
+        "The steady-state solver did not converge at V_hat = " + failed +
+        "; their rows in steady_state.csv hold the last converged speed "
+        "with steady = 0");
   }
 
 
@@ -1239,46 +1243,48 @@ namespace viscoslide
     const double V  = V_hat * scales.eps / scales.tau_ref;
     const double Fn = q.normal_force, Ft = q.tangential_force;
     using F = CsvTable;
-    CsvTable table(writer.path("steady_state.csv"),
-                   {"control",
-                    "mu_T",
-                    "R_hat",
-                    "t_hat",
-                    "V_hat",
-                    "delta_hat",
-                    "F_n_hat",
-                    "F_t_hat",
-                    "F_t_profile_hat",
-                    "mu",
-                    "mu_energy",
-                    "L_hat",
-                    "dissipation_rate_hat",
-                    "steady",
-                    "sliding_distance_over_eps",
-                    "time_constant",
-                    "solver"},
-                   version_string(),
-                   mpi_communicator);
-    table.add_row({prm.sliding.control,
-                   F::format(prm.adhesion.tabor_parameter),
-                   F::format(prm.adhesion.R_over_eps),
-                   prm.geometry.substrate == "layer"
-                     ? F::format(prm.geometry.layer_thickness)
-                     : std::string("half-plane"),
-                   F::format(V_hat),
-                   F::format(delta / scales.eps),
-                   F::format(Fn / scales.force),
-                   F::format(Ft / scales.force),
-                   F::format(q.profile_force / scales.force),
-                   F::format(std::abs(Ft / Fn)),
-                   F::format(std::abs(dissipation_rate / V / Fn)),
-                   F::format(q.contact_length / scales.R),
-                   F::format(dissipation_rate * scales.tau_ref /
-                             (scales.force * scales.eps)),
-                   steady ? "1" : "0",
-                   F::format(distance),
-                   prm.material.time_constant,
-                   solver});
+    if (!steady_state_table)
+      steady_state_table = std::make_unique<CsvTable>(
+        writer.path("steady_state.csv"),
+        std::vector<std::string>{"control",
+                                 "mu_T",
+                                 "R_hat",
+                                 "t_hat",
+                                 "V_hat",
+                                 "delta_hat",
+                                 "F_n_hat",
+                                 "F_t_hat",
+                                 "F_t_profile_hat",
+                                 "mu",
+                                 "mu_energy",
+                                 "L_hat",
+                                 "dissipation_rate_hat",
+                                 "steady",
+                                 "sliding_distance_over_eps",
+                                 "time_constant",
+                                 "solver"},
+        version_string(),
+        mpi_communicator);
+    steady_state_table->add_row({prm.sliding.control,
+                                 F::format(prm.adhesion.tabor_parameter),
+                                 F::format(prm.adhesion.R_over_eps),
+                                 prm.geometry.substrate == "layer"
+                                   ? F::format(prm.geometry.layer_thickness)
+                                   : std::string("half-plane"),
+                                 F::format(V_hat),
+                                 F::format(delta / scales.eps),
+                                 F::format(Fn / scales.force),
+                                 F::format(Ft / scales.force),
+                                 F::format(q.profile_force / scales.force),
+                                 F::format(std::abs(Ft / Fn)),
+                                 F::format(std::abs(dissipation_rate / V / Fn)),
+                                 F::format(q.contact_length / scales.R),
+                                 F::format(dissipation_rate * scales.tau_ref /
+                                           (scales.force * scales.eps)),
+                                 steady ? "1" : "0",
+                                 F::format(distance),
+                                 prm.material.time_constant,
+                                 solver});
     pcout << "mu = " << std::abs(Ft / Fn)
           << ", mu_energy = " << std::abs(dissipation_rate / V / Fn)
           << ", L_hat = " << q.contact_length / scales.R

@@ -1,5 +1,6 @@
 #include <viscoslide/newton.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace viscoslide
@@ -63,6 +64,49 @@ namespace viscoslide
           return -1;
         p.assemble(true);
         residual = p.residual_norm();
+      }
+    return -1;
+  }
+
+
+  int
+  relax(const NewtonProblem &p,
+        const double         c0,
+        const double         move,
+        const unsigned int   max_steps,
+        const bool           verbose,
+        ConditionalOStream  &out)
+  {
+    double c = c0;
+    p.set_dashpot(0.);
+    p.assemble(false);
+    double residual = p.residual_norm();
+    for (unsigned int k = 0; k < max_steps; ++k)
+      {
+        if (residual <= p.tolerance())
+          return k;
+        p.set_dashpot(c); // anchored here: the dashpot force vanishes at u
+        p.assemble(true);
+        p.compute_update();
+        p.remember_iterate();
+        p.step(1.);
+        const double moved = p.update_max_norm() / move;
+        p.set_dashpot(0.);
+        p.assemble(false);
+        const double r = p.residual_norm();
+        if (verbose)
+          out << "      relaxation " << k << ": residual " << r << ", dashpot "
+              << c << std::endl;
+        if (!std::isfinite(r) || !std::isfinite(moved))
+          {
+            p.step(0.);
+            c *= 4.;
+            if (c > 1e10 * c0)
+              return -1;
+            continue;
+          }
+        c = std::clamp(c * std::clamp(moved, 0.25, 4.), 1e-14 * c0, 1e10 * c0);
+        residual = r;
       }
     return -1;
   }

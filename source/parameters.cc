@@ -1,5 +1,8 @@
 #include <viscoslide/parameters.h>
 
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -392,12 +395,16 @@ namespace viscoslide
     Sliding::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Sliding");
-      prm.declare_entry("Sliding speed",
-                        "0",
-                        Patterns::Double(),
-                        "V_hat = V tau/eps of the sliding phase that follows "
-                        "the approach (and hold); the indenter profile moves "
-                        "towards +x over the fixed surface. 0: no sliding.");
+      prm.declare_entry(
+        "Sliding speed",
+        "0",
+        Patterns::List(Patterns::Double(), 1),
+        "V_hat = V tau/eps of the sliding phase that follows the approach "
+        "(and hold); the indenter profile moves towards +x over the fixed "
+        "surface. 0: no sliding. The steady-state solver also takes a "
+        "comma-separated list of positive speeds, visited in the order "
+        "given by one continuation (each speed starts from the solution "
+        "of the one before), with one row per speed in steady_state.csv.");
       prm.declare_entry("Control",
                         "displacement",
                         Patterns::Selection("displacement|force"),
@@ -466,7 +473,17 @@ namespace viscoslide
     Sliding::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Sliding");
-      speed                 = prm.get_double("Sliding speed");
+      const std::string speed_list = prm.get("Sliding speed");
+      speeds.clear();
+      for (const auto &v : dealii::Utilities::split_string_list(speed_list))
+        {
+          const double V = dealii::Utilities::string_to_double(v);
+          require(V >= 0 && std::isfinite(V),
+                  entry("Sliding", "Sliding speed", V) +
+                    " must not be negative");
+          speeds.push_back(V);
+        }
+      speed                 = speeds.back();
       control               = prm.get("Control");
       increment             = prm.get_double("Sliding increment");
       max_distance          = prm.get_double("Maximum sliding distance");
@@ -482,9 +499,12 @@ namespace viscoslide
       require(viscous_strain_degree >= 0 && viscous_strain_degree <= 4,
               entry("Sliding", "Viscous strain degree", viscous_strain_degree) +
                 " must be between 0 and 4");
-      require(speed >= 0 && std::isfinite(speed),
-              entry("Sliding", "Sliding speed", speed) +
-                " must not be negative");
+      require(speeds.size() == 1 ||
+                (solver == "steady-state" &&
+                 *std::min_element(speeds.begin(), speeds.end()) > 0),
+              "'Sliding/Sliding speed' = " + speed_list +
+                ": a list of speeds needs 'Sliding/Solver' = steady-state "
+                "and positive speeds");
       require(increment > 0,
               entry("Sliding", "Sliding increment", increment) +
                 " must be positive");

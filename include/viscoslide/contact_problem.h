@@ -26,6 +26,7 @@
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
 #include <viscoslide/material.h>
+#include <viscoslide/newton.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
@@ -75,7 +76,7 @@ namespace viscoslide
     void
     setup_system();
     void
-    assemble(bool with_matrix, double surface_damping);
+    assemble(bool with_matrix);
     // Factorizes (direct) or preconditions (iterative) system_matrix once;
     // solve() may then be called for several right-hand sides.
     void
@@ -93,7 +94,11 @@ namespace viscoslide
     // Newton's method for the state `target` from the current iterate.
     // Returns the iterations used, or -1 if it did not converge.
     int
-    solve_newton(const LoadState &target, double surface_damping = 0.);
+    solve_newton(const LoadState &target);
+    // The callbacks of newton() and relax() for this problem; u0 and
+    // delta0 keep the iterate a line search starts from.
+    NewtonProblem
+    newton_problem(TrilinosWrappers::MPI::Vector &u0, double &delta0);
     // Lands on the new branch after a surface instability by damped
     // pseudo-time stepping. Returns the total Newton iterations or -1.
     int
@@ -156,7 +161,8 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector  old_solution; // ghosted, last committed
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  newton_update;
-    TrilinosWrappers::MPI::Vector  relaxation_anchor; // ghosted
+    TrilinosWrappers::MPI::Vector  relaxation_anchor;    // ghosted
+    double                         surface_damping = 0.; // relax() only
     // Change of the solution over the last committed step and the change of
     // delta it came with: the secant predictor of the next step.
     TrilinosWrappers::MPI::Vector last_increment; // ghosted
@@ -192,7 +198,9 @@ namespace viscoslide
     slide();
     void
     slide_steady();
-    // steady_state.csv: one row for the sliding case.
+    // steady_state.csv: a row for the sliding case (for each listed speed
+    // with the steady-state solver); the file is created by the first row.
+    std::unique_ptr<CsvTable> steady_state_table;
     void
     write_steady_state(double                   V_hat,
                        double                   delta,

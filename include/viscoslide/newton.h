@@ -27,6 +27,12 @@ namespace viscoslide
     std::function<void()> remember_iterate;
     // ... and set the iterate to it plus alpha times the update.
     std::function<void(double alpha)> step;
+    // For relax(): a surface dashpot of stiffness c (per unit area)
+    // anchored at the present iterate enters assemble() from now on; 0
+    // removes it.
+    std::function<void(double c)> set_dashpot;
+    // Largest displacement in the update, for relax().
+    std::function<double()> update_max_norm;
   };
 
   // Returns the iterations used, or -1: residual or update not finite, no
@@ -38,6 +44,21 @@ namespace viscoslide
          bool                 line_search,
          bool                 verbose,
          ConditionalOStream  &out);
+  // Pseudo-transient continuation (Kelley and Keyes 1998) for a state whose
+  // equilibrium is not near, after a jump of the contact edge: each
+  // pseudo-step is one Newton step on the system with a surface dashpot c
+  // anchored at the present iterate. c starts at c0 and is steered by the
+  // motion: steps that move the surface by more than `move` stiffen it,
+  // shorter ones soften it, so that the iteration becomes plain Newton as
+  // the equilibrium is reached. Only an undamped equilibrium is accepted.
+  // Returns the pseudo-steps used, or -1.
+  int
+  relax(const NewtonProblem &problem,
+        double               c0,
+        double               move,
+        unsigned int         max_steps,
+        bool                 verbose,
+        ConditionalOStream  &out);
 } // namespace viscoslide
 
 #endif

@@ -10,6 +10,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace viscoslide
 {
@@ -111,15 +112,16 @@ namespace viscoslide
 
     struct Sliding
     {
-      double      speed;     // V_hat; 0: no sliding phase
-      std::string control;   // "displacement" or "force"
-      double      increment; // in finest cells
-      double      max_distance;
-      double      steady_tolerance;
-      double      steady_window;
-      std::string solver; // "transient" or "steady-state"
-      double      continuation_factor;
-      int         viscous_strain_degree;
+      std::vector<double> speeds;    // V_hat, in the order of continuation
+      double              speed;     // the last of them; 0: no sliding phase
+      std::string         control;   // "displacement" or "force"
+      double              increment; // in finest cells
+      double              max_distance;
+      double              steady_tolerance;
+      double              steady_window;
+      std::string         solver; // "transient" or "steady-state"
+      double              continuation_factor;
+      int                 viscous_strain_degree;
 
       static void
       declare(ParameterHandler &prm);

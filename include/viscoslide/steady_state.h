@@ -32,6 +32,7 @@
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
 #include <viscoslide/material.h>
+#include <viscoslide/newton.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
@@ -127,11 +128,20 @@ namespace viscoslide
     assemble(bool with_matrix);
     void
     solve_newton_system();
+    void
+    solve_linear(TrilinosWrappers::MPI::Vector       &x,
+                 const TrilinosWrappers::MPI::Vector &b);
     double
     residual_norm() const;
+    NewtonProblem
+    newton_problem(TrilinosWrappers::MPI::Vector &u0, double &delta0);
     // Newton's method at the present V_hat; the iterations used or -1.
     int
     solve_newton();
+    // Pseudo-transient continuation to the steady state at the present
+    // V_hat (relax()); the pseudo-steps used or -1.
+    int
+    relax_to_equilibrium();
     bool
     adapt_mesh();
     void
@@ -166,6 +176,15 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector  solution; // ghosted
     TrilinosWrappers::MPI::Vector  system_rhs, newton_update;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+    // Whether direct_solver holds the factorization of system_matrix as
+    // assembled last, and at which speed it was made.
+    bool   factorization_current = false;
+    double factorized_speed      = -1.;
+    // Counters for the log and the benchmark.
+    unsigned int factorizations = 0, krylov_iterations = 0;
+
+    TrilinosWrappers::MPI::Vector relaxation_anchor; // ghosted
+    double                        surface_damping = 0.;
 
     double V_hat = 0.;
     double delta = 0.;

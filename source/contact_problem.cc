@@ -437,12 +437,7 @@ namespace viscoslide
     amg.reset();
     if (direct)
       {
-        static SolverControl control(1, 0);
-        direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         "Amesos_Mumps"));
-        direct_solver->initialize(system_matrix);
+        direct_solver = factorize(system_matrix);
       }
     else
       {

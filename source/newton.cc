@@ -1,3 +1,5 @@
+#include <deal.II/lac/solver_control.h>
+
 #include <viscoslide/newton.h>
 
 #include <algorithm>
@@ -66,6 +68,18 @@ namespace viscoslide
         residual = p.residual_norm();
       }
     return -1;
+  }
+
+
+  std::unique_ptr<TrilinosWrappers::SolverDirect>
+  factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    static SolverControl control(1, 0);
+    auto solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+      control,
+      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+    solver->initialize(matrix);
+    return solver;
   }
 
 

@@ -708,12 +708,7 @@ namespace viscoslide
       }
     if (!factorization_current)
       {
-        static SolverControl control(1, 0);
-        direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         "Amesos_Mumps"));
-        direct_solver->initialize(system_matrix);
+        direct_solver         = factorize(system_matrix);
         factorization_current = true;
         factorized_speed      = V_hat;
         ++factorizations;

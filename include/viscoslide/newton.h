@@ -5,7 +5,11 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
 #include <functional>
+#include <memory>
 
 namespace viscoslide
 {
@@ -44,6 +48,11 @@ namespace viscoslide
          bool                 line_search,
          bool                 verbose,
          ConditionalOStream  &out);
+  // MUMPS factorization of a Newton matrix, for solves with several
+  // right-hand sides.
+  std::unique_ptr<TrilinosWrappers::SolverDirect>
+  factorize(const TrilinosWrappers::SparseMatrix &matrix);
+
   // Pseudo-transient continuation (Kelley and Keyes 1998) for a state whose
   // equilibrium is not near, after a jump of the contact edge: each
   // pseudo-step is one Newton step on the system with a surface dashpot c

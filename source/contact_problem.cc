@@ -142,10 +142,13 @@ namespace viscoslide
 
 
   ContactProblem::ContactProblem(const Parameters::AllParameters &parameters,
-                                 MPI_Comm mpi_communicator)
+                                 MPI_Comm        mpi_communicator,
+                                 const Progress *progress)
     : prm(parameters)
     , mpi_communicator(mpi_communicator)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
+              parameters.output.verbosity != "quiet")
     , timer(mpi_communicator,
             pcout,
             TimerOutput::never,
@@ -176,6 +179,7 @@ namespace viscoslide
                     parameters.adhesion.face_quadrature_points,
                     top_boundary)
     , writer(parameters.output.directory, mpi_communicator)
+    , progress(progress)
     , step_number(0)
     , last_newton_iterations(0)
     , last_step_cuts(0)
@@ -860,8 +864,14 @@ namespace viscoslide
           << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
           << "  L_hat " << std::setw(11) << sq.contact_length / scales.R
           << "  Newton " << last_newton_iterations << "  dofs "
-          << dof_handler.n_dofs() << (last_step_relaxed ? "  (jump)" : "")
-          << std::endl;
+          << dof_handler.n_dofs() << (last_step_relaxed ? "  (jump)" : "");
+    if (phase == "slide")
+      pcout << "  s " << slid << "/" << slide_distance << " eps";
+    if (progress != nullptr)
+      pcout << "  ["
+            << progress->report(phase == "slide" ? slid / slide_distance : 0.)
+            << "]";
+    pcout << std::endl;
 
     if (prm.output.profile_every > 0 &&
         step_number % prm.output.profile_every == 0)
@@ -1018,6 +1028,46 @@ namespace viscoslide
   }
 
 
+  // The paper fixes some cases by their load F_hat, reached by a
+  // displacement-controlled approach. Approach in the usual steps until
+  // F_n (which rises with delta once contact is made) passes the target,
+  // then solve that step again with F_n held at the target and delta free.
+  void
+  ContactProblem::approach_to_load()
+  {
+    const double       F    = prm.loading.target_load * scales.force;
+    const double       from = committed.delta, to = prm.loading.final_approach;
+    const unsigned int n =
+      std::max(1., std::ceil((to - from) / prm.loading.increment - 1e-9));
+    bool passed = false;
+    for (unsigned int k = 1; k <= n && !passed; ++k)
+      {
+        LoadState target = committed;
+        target.delta     = from + (to - from) * k / n;
+        if (!advance_to(target, "approach"))
+          abort_run(target);
+        passed =
+          last_quantities.minimum_gap < prm.adhesion.contact_gap * scales.eps &&
+          last_quantities.normal_force >= F;
+      }
+    if (!passed)
+      throw Parameters::ExcInvalidInput(
+        "'Loading/Target load' = " + std::to_string(prm.loading.target_load) +
+        " was not reached by 'Loading/Final approach' = " + std::to_string(to) +
+        " (F_n_hat there: " +
+        std::to_string(last_quantities.normal_force / scales.force) +
+        "); raise the Final approach");
+    force_control = true;
+    target_force  = F;
+    if (!advance_to(committed, "load"))
+      abort_run(committed);
+    force_control = false;
+    pcout << "Load F_hat = " << prm.loading.target_load
+          << " reached at delta_hat = " << committed.delta / scales.eps
+          << std::endl;
+  }
+
+
   // Phase 2 of the paper: the profile h(x - s) moves with s = V t over the
   // fixed surface until Fn (or delta), Ft and L are steady over a window.
   void
@@ -1053,6 +1103,8 @@ namespace viscoslide
     const double ds = prm.sliding.increment * h_min;
     const double dt = ds / V;
     const double s0 = committed.s;
+    slide_distance  = distance;
+    slid            = 0.;
     pcout << "Sliding at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control: up to " << distance
           << " eps in steps of " << ds << " eps, steady over " << window
@@ -1090,6 +1142,7 @@ namespace viscoslide
         target.s += ds;
         target.time += dt;
         target.dt = dt;
+        slid      = target.s - s0;
         if (!advance_to(target, "slide"))
           abort_run(target);
         const auto &q = last_quantities;
@@ -1217,12 +1270,40 @@ namespace viscoslide
           steady.write_profile(writer.path("surface_profile_steady.csv"));
         if (prm.output.write_fields)
           steady.write_fields(writer, k);
+        if (progress != nullptr)
+          pcout << "  V_hat " << speeds[k] << " (" << k + 1 << "/"
+                << speeds.size() << ")  ["
+                << progress->report((k + 1.) / speeds.size()) << "]"
+                << std::endl;
       }
     if (!failed.empty())
       throw std::runtime_error(
         "The steady-state solver did not converge at V_hat = " + failed +
         "; their rows in steady_state.csv hold the last converged speed "
         "with steady = 0");
+  }
+
+
+  std::vector<std::string>
+  ContactProblem::steady_state_columns()
+  {
+    return {"control",
+            "mu_T",
+            "R_hat",
+            "t_hat",
+            "V_hat",
+            "delta_hat",
+            "F_n_hat",
+            "F_t_hat",
+            "F_t_profile_hat",
+            "mu",
+            "mu_energy",
+            "L_hat",
+            "dissipation_rate_hat",
+            "steady",
+            "sliding_distance_over_eps",
+            "time_constant",
+            "solver"};
   }
 
 
@@ -1239,27 +1320,11 @@ namespace viscoslide
     const double Fn = q.normal_force, Ft = q.tangential_force;
     using F = CsvTable;
     if (!steady_state_table)
-      steady_state_table = std::make_unique<CsvTable>(
-        writer.path("steady_state.csv"),
-        std::vector<std::string>{"control",
-                                 "mu_T",
-                                 "R_hat",
-                                 "t_hat",
-                                 "V_hat",
-                                 "delta_hat",
-                                 "F_n_hat",
-                                 "F_t_hat",
-                                 "F_t_profile_hat",
-                                 "mu",
-                                 "mu_energy",
-                                 "L_hat",
-                                 "dissipation_rate_hat",
-                                 "steady",
-                                 "sliding_distance_over_eps",
-                                 "time_constant",
-                                 "solver"},
-        version_string(),
-        mpi_communicator);
+      steady_state_table =
+        std::make_unique<CsvTable>(writer.path("steady_state.csv"),
+                                   steady_state_columns(),
+                                   version_string(),
+                                   mpi_communicator);
     steady_state_table->add_row({prm.sliding.control,
                                  F::format(prm.adhesion.tabor_parameter),
                                  F::format(prm.adhesion.R_over_eps),
@@ -1346,7 +1411,10 @@ namespace viscoslide
       if (!advance_to(first, "start"))
         fail(first);
     }
-    ramp("approach", prm.loading.final_approach);
+    if (prm.loading.has_target_load())
+      approach_to_load();
+    else
+      ramp("approach", prm.loading.final_approach);
     if (prm.loading.hold_time > 0)
       {
         const double       t0 = committed.time, T = prm.loading.hold_time;

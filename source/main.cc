@@ -1,9 +1,9 @@
-// The viscoslide driver: reads a parameter file, prepares the output
-// directory, records the parameters actually used, and runs the problem.
+// The viscoslide command line; the work is done by run_parameter_file()
+// (driver.h).
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <viscoslide/contact_problem.h>
+#include <viscoslide/driver.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 
@@ -13,7 +13,8 @@
 namespace
 {
   const char *usage =
-    "Usage: viscoslide [--overwrite] PARAMETER_FILE.prm|.json\n"
+    "Usage: viscoslide [--overwrite] [--redo failed|all] "
+    "PARAMETER_FILE.prm|.json\n"
     "       viscoslide --print-parameters [prm|json]\n"
     "       viscoslide --help | --version\n"
     "\n"
@@ -24,7 +25,9 @@ namespace
     "  PARAMETER_FILE      the run's parameters; entries not given keep\n"
     "                      their defaults (see --print-parameters)\n"
     "  --overwrite         allow writing into an output directory that\n"
-    "                      already holds results\n"
+    "                      already holds results (a sweep: rerun all)\n"
+    "  --redo failed|all   a sweep reruns its failed (or all) finished\n"
+    "                      cases; by default they are skipped\n"
     "  --print-parameters  print every entry with default and documentation\n"
     "\n"
     "Run in parallel with: mpirun -np N viscoslide FILE.prm\n";
@@ -39,7 +42,7 @@ main(int argc, char *argv[])
   const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
 
   std::vector<std::string> args(argv + 1, argv + argc);
-  bool                     overwrite = false;
+  RunOptions               options;
   std::string              input;
   for (std::size_t i = 0; i < args.size(); ++i)
     {
@@ -67,7 +70,18 @@ main(int argc, char *argv[])
           return 0;
         }
       if (args[i] == "--overwrite")
-        overwrite = true;
+        options.overwrite = true;
+      else if (args[i] == "--redo")
+        {
+          if (i + 1 >= args.size() ||
+              (args[i + 1] != "failed" && args[i + 1] != "all"))
+            {
+              if (root)
+                std::cerr << "viscoslide: --redo needs 'failed' or 'all'\n";
+              return 1;
+            }
+          options.redo = args[++i];
+        }
       else if (!args[i].empty() && args[i][0] == '-')
         {
           if (root)
@@ -91,62 +105,5 @@ main(int argc, char *argv[])
       return 1;
     }
 
-  ParameterHandler          prm;
-  Parameters::AllParameters parameters;
-  try
-    {
-      Parameters::AllParameters::declare(prm);
-      if (!std::ifstream(input))
-        throw Parameters::ExcInvalidInput("cannot read parameter file '" +
-                                          input + "'");
-      prm.parse_input(input);
-      parameters.parse(prm);
-      OutputWriter::prepare_directory(parameters.output.directory,
-                                      overwrite,
-                                      comm);
-    }
-  catch (ExceptionBase &e) // ParameterHandler's: show only its message
-    {
-      if (root)
-        {
-          std::cerr << "viscoslide: error in parameter file '" << input
-                    << "':\n";
-          e.print_info(std::cerr);
-        }
-      return 1;
-    }
-  catch (std::exception &e)
-    {
-      if (root)
-        std::cerr << "viscoslide: error in parameter file '" << input << "':\n"
-                  << e.what() << std::endl;
-      return 1;
-    }
-
-  try
-    {
-      if (root)
-        {
-          const std::string dir = parameters.output.directory + "/";
-          std::ofstream     out(dir + "parameters.prm");
-          out << "# " << version_string() << "\n";
-          prm.print_parameters(out, ParameterHandler::PRM);
-          std::ofstream json(dir + "parameters.json");
-          prm.print_parameters(json, ParameterHandler::JSON);
-          std::ofstream(dir + "version.txt") << version_string() << "\n";
-          std::cout << version_string() << ", "
-                    << Utilities::MPI::n_mpi_processes(comm)
-                    << " MPI process(es)\n";
-        }
-      ContactProblem problem(parameters, comm);
-      problem.run();
-    }
-  catch (std::exception &e)
-    {
-      // Failures of the solver are collective, so every process ends here.
-      if (root)
-        std::cerr << "\nviscoslide: run failed:\n" << e.what() << std::endl;
-      return 2;
-    }
-  return 0;
+  return run_parameter_file(input, options, comm);
 }

@@ -6,6 +6,7 @@
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -135,6 +136,57 @@ namespace viscoslide
                            const std::string &,
                            unsigned int,
                            double);
+
+
+  Progress::Progress(const unsigned int n_cases, const unsigned int n_to_run)
+    : n_cases(n_cases)
+    , n_to_run(std::max(n_to_run, 1u))
+    , start(std::chrono::steady_clock::now())
+  {
+  }
+
+  void
+  Progress::start_case(const unsigned int k, const std::string &name)
+  {
+    this->k    = k;
+    this->name = name;
+    ++n_begun;
+  }
+
+  namespace
+  {
+    std::string
+    duration(const double seconds)
+    {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(seconds < 600 ? 1 : 0);
+      if (seconds < 120)
+        s << seconds << " s";
+      else if (seconds < 7200)
+        s << seconds / 60 << " min";
+      else
+        s << seconds / 3600 << " h";
+      return s.str();
+    }
+  } // namespace
+
+  std::string
+  Progress::report(const double case_fraction) const
+  {
+    const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    const double done =
+      (n_begun > 0 ? n_begun - 1 : 0) + std::clamp(case_fraction, 0., 1.);
+    std::ostringstream s;
+    if (n_cases > 1)
+      s << "case " << k << "/" << n_cases << " " << name << ": ";
+    s << std::fixed << std::setprecision(0) << 100 * case_fraction << " %, "
+      << duration(elapsed) << " elapsed";
+    if (done > 0.02)
+      s << ", ~" << duration(elapsed / done * (n_to_run - done)) << " left";
+    return s.str();
+  }
 
 
   std::string

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace viscoslide
@@ -47,6 +48,15 @@ namespace viscoslide
                         "An existing directory that already holds results "
                         "is refused unless the program is called with "
                         "--overwrite.");
+      prm.declare_entry("Verbosity",
+                        "normal",
+                        Patterns::Selection("quiet|normal|verbose"),
+                        "'quiet': only the start and end of each case and "
+                        "errors. 'normal': one line per step (approach) or "
+                        "per speed (steady-state solver) with the progress "
+                        "of the run: case k of n, sliding distance covered, "
+                        "elapsed and estimated remaining time. 'verbose': "
+                        "also every Newton residual and line-search step.");
       prm.declare_entry("Write fields",
                         "true",
                         Patterns::Bool(),
@@ -70,6 +80,7 @@ namespace viscoslide
     {
       prm.enter_subsection("Output");
       directory     = prm.get("Output directory");
+      verbosity     = prm.get("Verbosity");
       write_fields  = prm.get_bool("Write fields");
       fields_every  = prm.get_integer("Fields every");
       profile_every = prm.get_integer("Surface profile every");
@@ -282,6 +293,16 @@ namespace viscoslide
                         Patterns::Integer(1),
                         "Time steps of the hold, spaced geometrically from "
                         "1e-3 tau so that the relaxation is resolved.");
+      prm.declare_entry(
+        "Target load",
+        "",
+        Patterns::Anything(),
+        "F_hat to reach instead of Final approach: the approach goes on "
+        "in steps of Approach increment until F_n passes this value (after "
+        "contact is made), and that step is then solved with F_n held at "
+        "exactly this load. Negative values are tensile loads; they must "
+        "lie above the pull-off force. Final approach then only bounds the "
+        "search. Empty: no target, the approach ends at Final approach.");
       prm.declare_entry("Retract",
                         "false",
                         Patterns::Bool(),
@@ -298,16 +319,32 @@ namespace viscoslide
     Loading::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Loading");
-      initial_approach  = prm.get_double("Initial approach");
-      final_approach    = prm.get_double("Final approach");
-      increment         = prm.get_double("Approach increment");
-      minimum_increment = prm.get_double("Minimum increment");
-      approach_speed    = prm.get_double("Approach speed");
-      hold_time         = prm.get_double("Hold time");
-      hold_steps        = prm.get_integer("Hold steps");
-      retract           = prm.get_bool("Retract");
-      retract_to        = prm.get_double("Retract to");
+      initial_approach       = prm.get_double("Initial approach");
+      final_approach         = prm.get_double("Final approach");
+      increment              = prm.get_double("Approach increment");
+      minimum_increment      = prm.get_double("Minimum increment");
+      approach_speed         = prm.get_double("Approach speed");
+      hold_time              = prm.get_double("Hold time");
+      hold_steps             = prm.get_integer("Hold steps");
+      retract                = prm.get_bool("Retract");
+      retract_to             = prm.get_double("Retract to");
+      const std::string load = prm.get("Target load");
       prm.leave_subsection();
+      target_load = std::numeric_limits<double>::quiet_NaN();
+      if (!dealii::Utilities::trim(load).empty())
+        {
+          try
+            {
+              target_load = dealii::Utilities::string_to_double(load);
+            }
+          catch (...)
+            {
+              target_load = std::numeric_limits<double>::infinity();
+            }
+          require(std::isfinite(target_load),
+                  "'Loading/Target load' = " + load +
+                    " is not a finite number");
+        }
       require(increment > 0,
               entry("Loading", "Approach increment", increment) +
                 " must be positive");
@@ -401,10 +438,12 @@ namespace viscoslide
         Patterns::List(Patterns::Double(), 1),
         "V_hat = V tau/eps of the sliding phase that follows the approach "
         "(and hold); the indenter profile moves towards +x over the fixed "
-        "surface. 0: no sliding. The steady-state solver also takes a "
-        "comma-separated list of positive speeds, visited in the order "
-        "given by one continuation (each speed starts from the solution "
-        "of the one before), with one row per speed in steady_state.csv.");
+        "surface. 0: no sliding. A comma-separated list of positive "
+        "speeds is a sweep: the steady-state solver visits them in the "
+        "order given by one continuation (each speed starts from the "
+        "solution of the one before), the transient solver runs each as a "
+        "case of its own; either way one row per speed in "
+        "steady_state.csv.");
       prm.declare_entry("Control",
                         "displacement",
                         Patterns::Selection("displacement|force"),
@@ -500,11 +539,9 @@ namespace viscoslide
               entry("Sliding", "Viscous strain degree", viscous_strain_degree) +
                 " must be between 0 and 4");
       require(speeds.size() == 1 ||
-                (solver == "steady-state" &&
-                 *std::min_element(speeds.begin(), speeds.end()) > 0),
+                *std::min_element(speeds.begin(), speeds.end()) > 0,
               "'Sliding/Sliding speed' = " + speed_list +
-                ": a list of speeds needs 'Sliding/Solver' = steady-state "
-                "and positive speeds");
+                ": a list of speeds must hold positive speeds only");
       require(increment > 0,
               entry("Sliding", "Sliding increment", increment) +
                 " must be positive");
@@ -555,10 +592,6 @@ namespace viscoslide
                         Patterns::Integer(1),
                         "Pseudo-time steps allowed to land on a new branch "
                         "after a surface instability.");
-      prm.declare_entry("Verbose",
-                        "false",
-                        Patterns::Bool(),
-                        "Print every Newton residual and line-search step.");
       prm.leave_subsection();
     }
 
@@ -572,11 +605,95 @@ namespace viscoslide
       max_newton_iterations = prm.get_integer("Maximum Newton iterations");
       line_search           = prm.get_bool("Line search");
       max_relaxation_steps  = prm.get_integer("Maximum relaxation steps");
-      verbose               = prm.get_bool("Verbose");
       prm.leave_subsection();
       require(newton_tolerance > 0 && newton_tolerance < 1,
               entry("Solver", "Newton tolerance", newton_tolerance) +
                 " must be in (0, 1)");
+    }
+
+
+    void
+    Sweep::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sweep");
+      const auto list = Patterns::List(Patterns::Anything(), 0);
+      prm.declare_entry(
+        "Tabor parameters",
+        "",
+        list,
+        "Comma-separated muT values; each replaces Adhesion/Tabor "
+        "parameter in its own cases. The driver runs the product of all "
+        "non-empty lists of this section (and of the speeds of a transient "
+        "run), each case in its own folder of the Output directory, and "
+        "collects one row per case and speed in the sweep's "
+        "steady_state.csv (doc/sweeps.md). Empty: no sweep over muT.");
+      prm.declare_entry("Layer thicknesses",
+                        "",
+                        list,
+                        "Comma-separated t_hat values and/or 'half-plane'; "
+                        "each replaces Geometry/Substrate and Layer "
+                        "thickness in its own cases.");
+      prm.declare_entry("Approaches",
+                        "",
+                        list,
+                        "Comma-separated delta_hat values; each replaces "
+                        "Loading/Final approach. Not together with Loads.");
+      prm.declare_entry("Loads",
+                        "",
+                        list,
+                        "Comma-separated F_hat values; each becomes "
+                        "Loading/Target load. Not together with Approaches.");
+      prm.declare_entry(
+        "Controls",
+        "",
+        Patterns::List(Patterns::Selection("displacement|force"), 0),
+        "Comma-separated 'displacement' and/or 'force'; "
+        "each replaces Sliding/Control.");
+      prm.leave_subsection();
+    }
+
+    void
+    Sweep::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sweep");
+      // Numbers of a list, each checked, named in the message.
+      auto numbers = [&](const std::string        &name,
+                         const bool                positive,
+                         std::vector<std::string> *words = nullptr) {
+        std::vector<double> values;
+        for (const auto &w : Utilities::split_string_list(prm.get(name)))
+          {
+            if (words != nullptr)
+              words->push_back(w);
+            if (words != nullptr && w == "half-plane")
+              continue;
+            double v = std::numeric_limits<double>::quiet_NaN();
+            try
+              {
+                v = Utilities::string_to_double(w);
+              }
+            catch (...)
+              {
+              }
+            require(std::isfinite(v) && (!positive || v > 0),
+                    "'Sweep/" + name + "' holds '" + w + "': " +
+                      (positive ? "each entry must be a positive number"
+                                : "each entry must be a finite number") +
+                      (words != nullptr ? " or half-plane" : ""));
+            values.push_back(v);
+          }
+        return values;
+      };
+      tabor_parameters = numbers("Tabor parameters", true);
+      thicknesses.clear();
+      numbers("Layer thicknesses", true, &thicknesses);
+      approaches = numbers("Approaches", false);
+      loads      = numbers("Loads", false);
+      controls   = Utilities::split_string_list(prm.get("Controls"));
+      prm.leave_subsection();
+      require(approaches.empty() || loads.empty(),
+              "'Sweep/Approaches' and 'Sweep/Loads' are both given: a "
+              "case ends its approach either at a delta_hat or at an F_hat");
     }
 
 
@@ -591,6 +708,7 @@ namespace viscoslide
       Mesh::declare(prm);
       Sliding::declare(prm);
       Solver::declare(prm);
+      Sweep::declare(prm);
     }
 
     void
@@ -604,6 +722,8 @@ namespace viscoslide
       mesh.parse(prm);
       sliding.parse(prm);
       solver.parse(prm);
+      sweep.parse(prm);
+      solver.verbose = output.verbosity == "verbose";
       check_consistency();
     }
 
@@ -618,6 +738,10 @@ namespace viscoslide
                 geometry.substrate == "half-plane",
               entry("Geometry", "Domain width", geometry.domain_width) +
                 " must be at least twice the Layer thickness");
+      require(!loading.has_target_load() || loading.approach_speed == 0,
+              "'Loading/Target load' needs a quasi-static approach "
+              "('Loading/Approach speed' = 0): the load is found on the "
+              "relaxed loading curve");
       require(sliding.solver == "transient" || !loading.retract ||
                 sliding.speed == 0,
               "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "

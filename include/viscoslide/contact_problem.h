@@ -53,12 +53,20 @@ namespace viscoslide
   public:
     static constexpr unsigned int dim = 2;
 
+    // `progress`, if given, is appended to the per-step report lines (the
+    // sweep driver's case k of n and time estimate).
     ContactProblem(const Parameters::AllParameters &parameters,
-                   MPI_Comm                         mpi_communicator);
+                   MPI_Comm                         mpi_communicator,
+                   const Progress                  *progress = nullptr);
 
     // Approach, optional hold, optional retraction; writes all outputs.
     void
     run();
+
+    // The columns of steady_state.csv, so that the sweep driver can write
+    // a row for a case that failed before writing its own.
+    static std::vector<std::string>
+    steady_state_columns();
 
   private:
     // Components of the quadrature-point history: the arm stress and the
@@ -108,6 +116,10 @@ namespace viscoslide
     // worked.
     bool
     advance_to(const LoadState &target, const std::string &phase);
+    // Approach until F_n passes Loading/Target load, then hold exactly that
+    // load for one force-controlled solve.
+    void
+    approach_to_load();
 
     void
     read_cell_history(const DoFHandler<dim>::active_cell_iterator &cell,
@@ -220,6 +232,11 @@ namespace viscoslide
     SurfacePostprocessor      postprocessor;
     OutputWriter              writer;
     std::unique_ptr<CsvTable> approach_table;
+
+    const Progress *progress;
+    // Sliding distance of the transient run so far and its maximum, for
+    // the progress report.
+    double slid = 0., slide_distance = 0.;
 
     unsigned int step_number;
     unsigned int last_newton_iterations;

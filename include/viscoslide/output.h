@@ -8,6 +8,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -70,6 +71,34 @@ namespace viscoslide
     MPI_Comm    comm;
     std::map<std::string, std::vector<std::pair<double, std::string>>>
       pvd_records;
+  };
+
+
+  // How far a run (or a sweep of runs) has come, for one-line reports:
+  // case k of n, the fraction of the current case done, the elapsed and an
+  // estimate of the remaining wall time. The estimate assumes the cases
+  // still to run cost as much as those run so far.
+  class Progress
+  {
+  public:
+    // n_cases: cases in the sweep; n_to_run: of them, those this
+    // invocation runs (the others finished earlier).
+    Progress(unsigned int n_cases, unsigned int n_to_run);
+
+    // k counts from 1 among all cases.
+    void
+    start_case(unsigned int k, const std::string &name);
+
+    // E.g. "case 3/12 muT1_t100: 26 %, 5 min elapsed, ~14 min left".
+    std::string
+    report(double case_fraction) const;
+
+  private:
+    unsigned int                          n_cases, n_to_run;
+    unsigned int                          k       = 0;
+    unsigned int                          n_begun = 0;
+    std::string                           name;
+    std::chrono::steady_clock::time_point start;
   };
 
 

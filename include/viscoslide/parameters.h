@@ -8,6 +8,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ namespace viscoslide
     struct Output
     {
       std::string  directory;
+      std::string  verbosity; // "quiet", "normal" or "verbose"
       unsigned int fields_every;
       unsigned int profile_every;
       bool         write_fields;
@@ -88,6 +90,15 @@ namespace viscoslide
       unsigned int hold_steps;
       bool         retract;
       double       retract_to;
+      // F_hat to reach at the end of the approach; NaN: none, the approach
+      // ends at final_approach.
+      double target_load;
+
+      bool
+      has_target_load() const
+      {
+        return !std::isnan(target_load);
+      }
 
       static void
       declare(ParameterHandler &prm);
@@ -145,6 +156,22 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
 
+    // The lists whose product is a sweep. An empty list leaves the entry of
+    // its own section alone; see doc/sweeps.md.
+    struct Sweep
+    {
+      std::vector<double>      tabor_parameters;
+      std::vector<std::string> thicknesses; // numbers or "half-plane"
+      std::vector<double>      approaches;
+      std::vector<double>      loads;
+      std::vector<std::string> controls;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     // All parameters of one run. The constructor declares; parse() reads a
     // file, checks ranges and cross-entry consistency, and throws
     // ExcInvalidInput with the entry name and value on the first violation.
@@ -158,6 +185,7 @@ namespace viscoslide
       Mesh     mesh;
       Sliding  sliding;
       Solver   solver;
+      Sweep    sweep;
 
       static void
       declare(ParameterHandler &prm);

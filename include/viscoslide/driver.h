@@ -1,0 +1,32 @@
+// The driver: turns a parameter file into one run or into a sweep over the
+// product of the lists of its Sweep section (and of a transient run's
+// speeds), runs each case in its own folder, and keeps the sweep's
+// steady_state.csv up to date. See doc/sweeps.md.
+#ifndef viscoslide_driver_h
+#define viscoslide_driver_h
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+
+namespace viscoslide
+{
+  struct RunOptions
+  {
+    // Replace the results of an earlier run (a single run), or rerun every
+    // case of a sweep, even one run with other parameters.
+    bool overwrite = false;
+    // Which finished cases of a sweep run again: "none", "failed", "all".
+    std::string redo = "none";
+  };
+
+  // Runs the parameter file `input` (.prm or .json). Returns the exit code:
+  // 0 when every case ran, 1 for bad input (nothing was run), 2 when a run
+  // or some cases of a sweep failed (the others are complete).
+  int
+  run_parameter_file(const std::string &input,
+                     const RunOptions  &options,
+                     MPI_Comm           comm);
+} // namespace viscoslide
+
+#endif

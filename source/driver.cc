@@ -1,0 +1,518 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <viscoslide/contact_problem.h>
+#include <viscoslide/driver.h>
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace viscoslide
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    struct Setting
+    {
+      std::string section, entry, value;
+    };
+
+    // One run of a sweep: the entries it changes in the parameter file, and
+    // the folder (relative to the Output directory; empty for a run that
+    // is not a sweep).
+    struct Case
+    {
+      std::string               name;
+      std::vector<Setting>      settings;
+      Parameters::AllParameters parameters;
+      std::string               parameter_text; // PRM, for provenance
+      std::string               parameter_json;
+    };
+
+    // Reads `input`, applies the case's settings, checks every entry.
+    void
+    read_case(const std::string &input, Case &c)
+    {
+      ParameterHandler prm;
+      Parameters::AllParameters::declare(prm);
+      prm.parse_input(input);
+      for (const auto &s : c.settings)
+        {
+          prm.enter_subsection(s.section);
+          prm.set(s.entry, s.value);
+          prm.leave_subsection();
+        }
+      c.parameters.parse(prm);
+      std::ostringstream text, json;
+      prm.print_parameters(text, ParameterHandler::PRM);
+      prm.print_parameters(json, ParameterHandler::JSON);
+      c.parameter_text = text.str();
+      c.parameter_json = json.str();
+    }
+
+    // The product of the sweep lists. A list of one entry is applied but
+    // does not appear in the folder names.
+    std::vector<Case>
+    make_cases(const Parameters::AllParameters &p)
+    {
+      struct Choice
+      {
+        std::string          label;
+        std::vector<Setting> settings;
+      };
+      std::vector<std::vector<Choice>> dimensions;
+      auto words = [](const std::vector<double> &v) {
+        std::vector<std::string> w;
+        for (const double x : v)
+          w.push_back(CsvTable::format(x));
+        return w;
+      };
+      auto add = [&](const std::vector<std::string> &values,
+                     const std::string              &prefix,
+                     auto                          &&settings_of) {
+        if (values.empty())
+          return;
+        std::vector<Choice> d;
+        for (const auto &v : values)
+          d.push_back({v == "half-plane" ? v : prefix + v, settings_of(v)});
+        dimensions.push_back(d);
+      };
+      const auto &sw = p.sweep;
+      add(words(sw.tabor_parameters), "muT", [](const std::string &v) {
+        return std::vector<Setting>{{"Adhesion", "Tabor parameter", v}};
+      });
+      add(sw.thicknesses, "t", [](const std::string &v) {
+        if (v == "half-plane")
+          return std::vector<Setting>{{"Geometry", "Substrate", v}};
+        return std::vector<Setting>{{"Geometry", "Substrate", "layer"},
+                                    {"Geometry", "Layer thickness", v}};
+      });
+      add(words(sw.approaches), "delta", [](const std::string &v) {
+        return std::vector<Setting>{{"Loading", "Final approach", v},
+                                    {"Loading", "Target load", ""}};
+      });
+      add(words(sw.loads), "F", [](const std::string &v) {
+        return std::vector<Setting>{{"Loading", "Target load", v}};
+      });
+      add(sw.controls, "", [](const std::string &v) {
+        return std::vector<Setting>{{"Sliding", "Control", v}};
+      });
+      if (p.sliding.solver == "transient" && p.sliding.speeds.size() > 1)
+        add(words(p.sliding.speeds), "V", [](const std::string &v) {
+          return std::vector<Setting>{{"Sliding", "Sliding speed", v}};
+        });
+
+      std::vector<Case> cases(1);
+      for (const auto &d : dimensions)
+        {
+          std::vector<Case> product;
+          for (const auto &c : cases)
+            for (const auto &choice : d)
+              {
+                Case n = c;
+                if (d.size() > 1)
+                  n.name += (n.name.empty() ? "" : "_") + choice.label;
+                n.settings.insert(n.settings.end(),
+                                  choice.settings.begin(),
+                                  choice.settings.end());
+                product.push_back(n);
+              }
+          cases = product;
+        }
+      return cases;
+    }
+
+    // A one-line reason for a CSV cell.
+    std::string
+    one_line(const std::string &text)
+    {
+      std::string s;
+      for (const char c : text)
+        s += c == ',' ? ';' : (c == '\n' || c == '\r' || c == '\t') ? ' ' : c;
+      const auto b = s.find_first_not_of(' '), e = s.find_last_not_of(' ');
+      s = b == std::string::npos ? "" : s.substr(b, e - b + 1);
+      return s.size() > 300 ? s.substr(0, 297) + "..." : s;
+    }
+
+    // Writes `text` to `path` through a temporary file and a rename, so
+    // that a killed run leaves the old or the new file, never half of one.
+    void
+    write_atomically(const fs::path &path, const std::string &text)
+    {
+      const fs::path tmp = path.string() + ".tmp";
+      {
+        std::ofstream out(tmp);
+        out << text;
+        out.flush();
+        if (!out)
+          throw std::runtime_error("cannot write '" + tmp.string() +
+                                   "' (disk full?)");
+      }
+      fs::rename(tmp, path);
+    }
+
+    std::string
+    read_file(const fs::path &path)
+    {
+      std::ifstream     in(path);
+      std::stringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+
+    // Parameter texts compared without their comment lines (documentation,
+    // version).
+    std::string
+    without_comments(const std::string &text)
+    {
+      std::istringstream in(text);
+      std::string        line, out;
+      while (std::getline(in, line))
+        if (line.find_first_not_of(" \t") != std::string::npos &&
+            line[line.find_first_not_of(" \t")] != '#')
+          out += line + "\n";
+      return out;
+    }
+
+    struct Status
+    {
+      std::string state; // "" (not run or interrupted), "done", "failed"
+      std::string reason;
+    };
+
+    Status
+    read_status(const fs::path &folder)
+    {
+      Status        s;
+      std::ifstream in(folder / "status");
+      std::getline(in, s.state);
+      std::getline(in, s.reason);
+      return s;
+    }
+
+    // The rows of a case's steady_state.csv as column -> value maps.
+    std::vector<std::map<std::string, std::string>>
+    read_rows(const fs::path &csv)
+    {
+      std::vector<std::map<std::string, std::string>> rows;
+      std::ifstream                                   in(csv);
+      std::string                                     line;
+      std::vector<std::string>                        header;
+      while (std::getline(in, line))
+        {
+          if (line.empty() || line[0] == '#')
+            continue;
+          const auto values = Utilities::split_string_list(line, ',');
+          if (header.empty())
+            {
+              header = values;
+              continue;
+            }
+          std::map<std::string, std::string> row;
+          for (std::size_t i = 0; i < header.size() && i < values.size(); ++i)
+            row[header[i]] = values[i];
+          rows.push_back(row);
+        }
+      return rows;
+    }
+
+    // The sweep's steady_state.csv, rebuilt from the case folders after
+    // each case: a row per case and speed, or one row naming the reason
+    // for a case that failed before writing any.
+    void
+    write_sweep_table(const fs::path &directory, const std::vector<Case> &cases)
+    {
+      const auto         columns = ContactProblem::steady_state_columns();
+      std::ostringstream out;
+      out << "# " << version_string() << "; sweep of " << cases.size()
+          << " cases, one folder each\ncase,status,reason";
+      for (const auto &c : columns)
+        out << "," << c;
+      out << "\n";
+      for (const auto &c : cases)
+        {
+          const Status status = read_status(directory / c.name);
+          if (status.state.empty())
+            continue;
+          auto rows = read_rows(directory / c.name / "steady_state.csv");
+          if (rows.empty())
+            {
+              // What is known of the case without a result.
+              const auto &p = c.parameters;
+              rows.push_back(
+                {{"control", p.sliding.control},
+                 {"mu_T", CsvTable::format(p.adhesion.tabor_parameter)},
+                 {"R_hat", CsvTable::format(p.adhesion.R_over_eps)},
+                 {"t_hat",
+                  p.geometry.substrate == "layer"
+                    ? CsvTable::format(p.geometry.layer_thickness)
+                    : std::string("half-plane")},
+                 {"steady", "0"},
+                 {"time_constant", p.material.time_constant},
+                 {"solver", p.sliding.solver}});
+            }
+          for (auto &row : rows)
+            {
+              out << c.name << "," << status.state << "," << status.reason;
+              for (const auto &col : columns)
+                out << "," << row[col];
+              out << "\n";
+            }
+        }
+      write_atomically(directory / "steady_state.csv", out.str());
+    }
+
+    // parameters.prm (with the version), parameters.json and version.txt
+    // in the case's folder.
+    void
+    write_provenance(const Case &c, MPI_Comm comm)
+    {
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      const fs::path dir(c.parameters.output.directory);
+      std::ofstream(dir / "parameters.prm") << "# " << version_string() << "\n"
+                                            << c.parameter_text;
+      std::ofstream(dir / "parameters.json") << c.parameter_json;
+      std::ofstream(dir / "version.txt") << version_string() << "\n";
+    }
+
+    // Runs one case; returns "" or the reason it failed. Failures of the
+    // solver are collective, so every process returns the same.
+    std::string
+    run_case(const Case &c, const Progress &progress, MPI_Comm comm)
+    {
+      try
+        {
+          ContactProblem problem(c.parameters, comm, &progress);
+          problem.run();
+          return "";
+        }
+      catch (std::exception &e)
+        {
+          const std::string what = e.what();
+          return what.empty() ? "unknown error" : what;
+        }
+    }
+  } // namespace
+
+
+  int
+  run_parameter_file(const std::string &input,
+                     const RunOptions  &options,
+                     MPI_Comm           comm)
+  {
+    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+    std::vector<Case> cases;
+    std::string       in_case;
+    fs::path          top; // the Output directory
+    try
+      {
+        if (!std::ifstream(input))
+          throw Parameters::ExcInvalidInput("cannot read parameter file '" +
+                                            input + "'");
+        Case base;
+        read_case(input, base);
+        cases = make_cases(base.parameters);
+        // Every case is checked before any runs: a bad value in a list
+        // must not surface hours into a sweep.
+        top = base.parameters.output.directory;
+        for (auto &c : cases)
+          {
+            in_case = c.name;
+            if (!c.name.empty())
+              c.settings.push_back(
+                {"Output", "Output directory", (top / c.name).string()});
+            read_case(input, c);
+          }
+      }
+    catch (ExceptionBase &e) // ParameterHandler's: show only its message
+      {
+        if (root)
+          {
+            std::cerr << "viscoslide: error in parameter file '" << input << "'"
+                      << (in_case.empty() ? "" : ", sweep case " + in_case)
+                      << ":\n";
+            e.print_info(std::cerr);
+          }
+        return 1;
+      }
+    catch (std::exception &e)
+      {
+        if (root)
+          std::cerr << "viscoslide: error in parameter file '" << input << "'"
+                    << (in_case.empty() ? "" : ", sweep case " + in_case)
+                    << ":\n"
+                    << e.what() << std::endl;
+        return 1;
+      }
+
+    // A single run: its files go straight into the Output directory.
+    if (cases.size() == 1 && cases[0].name.empty())
+      {
+        const Case &c = cases[0];
+        try
+          {
+            OutputWriter::prepare_directory(c.parameters.output.directory,
+                                            options.overwrite,
+                                            comm);
+            write_provenance(c, comm);
+          }
+        catch (std::exception &e)
+          {
+            if (root)
+              std::cerr << "viscoslide: " << e.what() << std::endl;
+            return 1;
+          }
+        if (root)
+          std::cout << version_string() << ", "
+                    << Utilities::MPI::n_mpi_processes(comm)
+                    << " MPI process(es)\n";
+        const Progress    progress(1, 1);
+        const std::string failure = run_case(c, progress, comm);
+        if (!failure.empty() && root)
+          std::cerr << "\nviscoslide: run failed:\n" << failure << std::endl;
+        return failure.empty() ? 0 : 2;
+      }
+
+    // A sweep. Which cases run: those never finished, and those the user
+    // asked to redo; a finished case whose parameters differ from the
+    // file's is refused, so that one table never mixes two studies.
+    std::vector<char> to_run(cases.size(), 1);
+    std::string       error;
+    if (root)
+      {
+        std::error_code ec;
+        fs::create_directories(top, ec);
+        if (ec)
+          error = "cannot create output directory '" + top.string() +
+                  "': " + ec.message();
+        for (std::size_t k = 0; k < cases.size() && error.empty(); ++k)
+          {
+            const fs::path dir    = top / cases[k].name;
+            const Status   status = read_status(dir);
+            if (status.state.empty())
+              continue; // never run, or interrupted: run (again)
+            const bool same =
+              without_comments(read_file(dir / "parameters.prm")) ==
+              without_comments(cases[k].parameter_text);
+            if (!same && !options.overwrite)
+              error = "case folder '" + dir.string() +
+                      "' holds a case run with other parameters; choose "
+                      "another 'Output/Output directory' or run with "
+                      "--overwrite";
+            to_run[k] = !same || options.overwrite || options.redo == "all" ||
+                        (options.redo == "failed" && status.state == "failed");
+          }
+        if (error.empty())
+          try
+            {
+              write_atomically(top / "sweep.prm",
+                               "# " + version_string() + "\n" +
+                                 read_file(input));
+            }
+          catch (std::exception &e)
+            {
+              error = e.what();
+            }
+      }
+    error  = Utilities::MPI::broadcast(comm, error, 0);
+    to_run = Utilities::MPI::broadcast(comm, to_run, 0);
+    if (!error.empty())
+      {
+        if (root)
+          std::cerr << "viscoslide: " << error << std::endl;
+        return 1;
+      }
+
+    const unsigned int n_to_run = std::count(to_run.begin(), to_run.end(), 1);
+    if (root)
+      std::cout << version_string() << ", "
+                << Utilities::MPI::n_mpi_processes(comm)
+                << " MPI process(es)\nSweep of " << cases.size()
+                << " cases into '" << top.string() << "': " << n_to_run
+                << " to run, " << cases.size() - n_to_run
+                << " finished earlier\n";
+    Progress progress(cases.size(), n_to_run);
+    for (std::size_t k = 0; k < cases.size(); ++k)
+      {
+        const Case    &c   = cases[k];
+        const fs::path dir = top / c.name;
+        if (!to_run[k])
+          {
+            if (root)
+              std::cout << "case " << k + 1 << "/" << cases.size() << " "
+                        << c.name << ": " << read_status(dir).state
+                        << " earlier, skipped\n";
+            continue;
+          }
+        progress.start_case(k + 1, c.name);
+        std::string failure;
+        try
+          {
+            if (root)
+              fs::remove_all(dir);
+            OutputWriter::prepare_directory(dir.string(), true, comm);
+            write_provenance(c, comm);
+          }
+        catch (std::exception &e)
+          {
+            failure = e.what();
+          }
+        failure = Utilities::MPI::broadcast(comm, failure, 0);
+        if (root)
+          {
+            std::cout << "\n=== case " << k + 1 << "/" << cases.size() << " "
+                      << c.name << ":";
+            for (const auto &s : c.settings)
+              if (s.section != "Output")
+                std::cout << " " << s.entry << " = " << s.value << ";";
+            std::cout << std::endl;
+          }
+        if (failure.empty())
+          failure = run_case(c, progress, comm);
+        if (root)
+          {
+            try
+              {
+                write_atomically(dir / "status",
+                                 failure.empty()
+                                   ? std::string("done\n\n")
+                                   : "failed\n" + one_line(failure) + "\n");
+                write_sweep_table(top, cases);
+              }
+            catch (std::exception &e)
+              {
+                std::cerr << "viscoslide: " << e.what() << std::endl;
+              }
+            std::cout << "case " << k + 1 << "/" << cases.size() << " "
+                      << c.name << ": "
+                      << (failure.empty() ? "done" : "FAILED: " + failure)
+                      << "  [" << progress.report(1.) << "]" << std::endl;
+          }
+      }
+
+    // The table also when every case was skipped, and the verdict.
+    std::string failed;
+    if (root)
+      {
+        write_sweep_table(top, cases);
+        for (const auto &c : cases)
+          if (read_status(top / c.name).state != "done")
+            failed += " " + c.name;
+        std::cout << "\nSweep finished: " << top.string() << "/steady_state.csv"
+                  << std::endl;
+        if (!failed.empty())
+          std::cerr << "viscoslide: these cases failed (reasons in "
+                    << (top / "steady_state.csv").string() << "):" << failed
+                    << std::endl;
+      }
+    failed = Utilities::MPI::broadcast(comm, failed, 0);
+    return failed.empty() ? 0 : 2;
+  }
+} // namespace viscoslide

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -350,6 +351,17 @@ namespace viscoslide
                     << ":\n"
                     << e.what() << std::endl;
         return 1;
+      }
+
+    if (options.dry_run)
+      {
+        if (root)
+          for (const auto &c : cases)
+            std::cout << (top / c.name).string() << " "
+                      << std::hash<std::string>()(
+                           without_comments(c.parameter_text))
+                      << std::endl;
+        return 0;
       }
 
     // A single run: its files go straight into the Output directory.

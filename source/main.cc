@@ -13,7 +13,7 @@
 namespace
 {
   const char *usage =
-    "Usage: viscoslide [--overwrite] [--redo failed|all] "
+    "Usage: viscoslide [--overwrite] [--redo failed|all] [--dry-run] "
     "PARAMETER_FILE.prm|.json\n"
     "       viscoslide --print-parameters [prm|json]\n"
     "       viscoslide --help | --version\n"
@@ -28,6 +28,8 @@ namespace
     "                      already holds results (a sweep: rerun all)\n"
     "  --redo failed|all   a sweep reruns its failed (or all) finished\n"
     "                      cases; by default they are skipped\n"
+    "  --dry-run           check the file, list the case folders (with a\n"
+    "                      checksum of each case's parameters) and stop\n"
     "  --print-parameters  print every entry with default and documentation\n"
     "\n"
     "Run in parallel with: mpirun -np N viscoslide FILE.prm\n";
@@ -71,6 +73,8 @@ main(int argc, char *argv[])
         }
       if (args[i] == "--overwrite")
         options.overwrite = true;
+      else if (args[i] == "--dry-run")
+        options.dry_run = true;
       else if (args[i] == "--redo")
         {
           if (i + 1 >= args.size() ||

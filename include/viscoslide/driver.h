@@ -18,6 +18,9 @@ namespace viscoslide
     bool overwrite = false;
     // Which finished cases of a sweep run again: "none", "failed", "all".
     std::string redo = "none";
+    // Check the file and list the cases (folder and checksum of their
+    // parameters) without running or writing anything.
+    bool dry_run = false;
   };
 
   // Runs the parameter file `input` (.prm or .json). Returns the exit code:

@@ -424,9 +424,10 @@ namespace viscoslide
         if (error.empty())
           try
             {
-              write_atomically(top / "sweep.prm",
-                               "# " + version_string() + "\n" +
-                                 read_file(input));
+              const std::string text =
+                "# " + version_string() + "\n" + read_file(input);
+              if (read_file(top / "sweep.prm") != text)
+                write_atomically(top / "sweep.prm", text);
             }
           catch (std::exception &e)
             {

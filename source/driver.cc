@@ -483,7 +483,7 @@ namespace viscoslide
             std::cout << "\n=== case " << k + 1 << "/" << cases.size() << " "
                       << c.name << ":";
             for (const auto &s : c.settings)
-              if (s.section != "Output")
+              if (s.section != "Output" && !s.value.empty())
                 std::cout << " " << s.entry << " = " << s.value << ";";
             std::cout << std::endl;
           }

@@ -71,6 +71,33 @@ namespace viscoslide
   }
 
 
+  NewtonProblem
+  with_iterate(NewtonProblem                  problem,
+               const NewtonIterate           &it,
+               TrilinosWrappers::MPI::Vector &u0,
+               double                        &delta0)
+  {
+    problem.update_norm      = [it] { return it.update.l2_norm(); };
+    problem.update_max_norm  = [it] { return it.update.linfty_norm(); };
+    problem.remember_iterate = [it, &u0, &delta0] {
+      u0     = it.solution;
+      delta0 = it.delta;
+    };
+    problem.step = [it, &u0, &delta0](const double alpha) {
+      TrilinosWrappers::MPI::Vector trial(u0);
+      trial.add(alpha, it.update);
+      it.solution = trial;
+      it.delta    = delta0 + alpha * it.delta_update;
+    };
+    problem.set_dashpot = [it](const double c) {
+      it.surface_damping = c;
+      if (c > 0)
+        it.relaxation_anchor = it.solution;
+    };
+    return problem;
+  }
+
+
   std::unique_ptr<TrilinosWrappers::SolverDirect>
   factorize(const TrilinosWrappers::SparseMatrix &matrix)
   {

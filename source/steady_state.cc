@@ -758,25 +758,16 @@ namespace viscoslide
     problem.tolerance     = [this, floor] {
       return prm.solver.newton_tolerance * (traction_scale + floor);
     };
-    problem.compute_update   = [this] { solve_newton_system(); };
-    problem.update_norm      = [this] { return newton_update.l2_norm(); };
-    problem.update_max_norm  = [this] { return newton_update.linfty_norm(); };
-    problem.remember_iterate = [this, &u0, &delta0] {
-      u0     = solution;
-      delta0 = delta;
-    };
-    problem.step = [this, &u0, &delta0](const double alpha) {
-      TrilinosWrappers::MPI::Vector trial(u0);
-      trial.add(alpha, newton_update);
-      solution = trial;
-      delta    = delta0 + alpha * delta_update;
-    };
-    problem.set_dashpot = [this](const double c) {
-      surface_damping = c;
-      if (c > 0)
-        relaxation_anchor = solution;
-    };
-    return problem;
+    problem.compute_update = [this] { solve_newton_system(); };
+    return with_iterate(problem,
+                        {solution,
+                         delta,
+                         newton_update,
+                         delta_update,
+                         surface_damping,
+                         relaxation_anchor},
+                        u0,
+                        delta0);
   }
 
 

@@ -39,6 +39,29 @@ namespace viscoslide
     std::function<double()> update_max_norm;
   };
 
+  // Where a solver keeps its iterate (the displacements and, under force
+  // control, delta), its Newton direction and its surface dashpot. Both
+  // solvers hold the same members; with_iterate() builds the callbacks that
+  // only move these around.
+  struct NewtonIterate
+  {
+    TrilinosWrappers::MPI::Vector       &solution;
+    double                              &delta;
+    const TrilinosWrappers::MPI::Vector &update;
+    const double                        &delta_update;
+    double                              &surface_damping;
+    TrilinosWrappers::MPI::Vector       &relaxation_anchor;
+  };
+
+  // Sets remember_iterate, step, set_dashpot, update_norm and
+  // update_max_norm of `problem`; u0 and delta0 keep the iterate a line
+  // search starts from and must outlive the problem.
+  NewtonProblem
+  with_iterate(NewtonProblem                  problem,
+               const NewtonIterate           &iterate,
+               TrilinosWrappers::MPI::Vector &u0,
+               double                        &delta0);
+
   // Returns the iterations used, or -1: residual or update not finite, no
   // reduction along the update (with line search: within 8 halvings), or
   // no convergence within max_iterations.

@@ -1043,10 +1043,10 @@ namespace viscoslide
       }
     if (!passed)
       throw Parameters::ExcInvalidInput(
-        "'Loading/Target load' = " + std::to_string(prm.loading.target_load) +
-        " was not reached by 'Loading/Final approach' = " + std::to_string(to) +
-        " (F_n_hat there: " +
-        std::to_string(last_quantities.normal_force / scales.force) +
+        "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
+        " was not reached by 'Loading/Final approach' = " +
+        CsvTable::format(to) + " (F_n_hat there: " +
+        CsvTable::format(last_quantities.normal_force / scales.force) +
         "); raise the Final approach");
     force_control = true;
     target_force  = F;

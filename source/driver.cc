@@ -468,8 +468,9 @@ namespace viscoslide
         std::string failure;
         try
           {
+            std::error_code ec; // prepare_directory() reports the failure
             if (root)
-              fs::remove_all(dir);
+              fs::remove_all(dir, ec);
             OutputWriter::prepare_directory(dir.string(), true, comm);
             write_provenance(c, comm);
           }

@@ -167,17 +167,30 @@ namespace viscoslide
       return s.str();
     }
 
-    // Parameter texts compared without their comment lines (documentation,
-    // version).
+    // What identifies a case's run: its parameters without comment lines
+    // (documentation, version) and without the Sweep section, whose lists
+    // span the study but do not change a case (its own values are set in
+    // their sections). So a list may grow without invalidating the cases
+    // already finished.
     std::string
-    without_comments(const std::string &text)
+    case_identity(const std::string &text)
     {
       std::istringstream in(text);
       std::string        line, out;
+      bool               in_sweep = false;
       while (std::getline(in, line))
-        if (line.find_first_not_of(" \t") != std::string::npos &&
-            line[line.find_first_not_of(" \t")] != '#')
-          out += line + "\n";
+        {
+          const auto first = line.find_first_not_of(" \t");
+          if (first == std::string::npos || line[first] == '#')
+            continue;
+          const std::string trimmed = Utilities::trim(line);
+          if (trimmed == "subsection Sweep")
+            in_sweep = true;
+          else if (in_sweep && trimmed == "end")
+            in_sweep = false;
+          else if (!in_sweep)
+            out += line + "\n";
+        }
       return out;
     }
 
@@ -359,7 +372,7 @@ namespace viscoslide
           for (const auto &c : cases)
             std::cout << (top / c.name).string() << " "
                       << std::hash<std::string>()(
-                           without_comments(c.parameter_text))
+                           case_identity(c.parameter_text))
                       << std::endl;
         return 0;
       }
@@ -411,8 +424,8 @@ namespace viscoslide
             if (status.state.empty())
               continue; // never run, or interrupted: run (again)
             const bool same =
-              without_comments(read_file(dir / "parameters.prm")) ==
-              without_comments(cases[k].parameter_text);
+              case_identity(read_file(dir / "parameters.prm")) ==
+              case_identity(cases[k].parameter_text);
             if (!same && !options.overwrite)
               error = "case folder '" + dir.string() +
                       "' holds a case run with other parameters; choose "

@@ -22,6 +22,21 @@ namespace viscoslide
           throw ExcInvalidInput(message);
       }
 
+      // The number a word spells, or NaN if it spells none (the callers
+      // then name the entry and the word).
+      double
+      to_number(const std::string &word)
+      {
+        try
+          {
+            return Utilities::string_to_double(word);
+          }
+        catch (...)
+          {
+            return std::numeric_limits<double>::quiet_NaN();
+          }
+      }
+
       std::string
       entry(const std::string &section,
             const std::string &name,
@@ -333,14 +348,7 @@ namespace viscoslide
       target_load = std::numeric_limits<double>::quiet_NaN();
       if (!dealii::Utilities::trim(load).empty())
         {
-          try
-            {
-              target_load = dealii::Utilities::string_to_double(load);
-            }
-          catch (...)
-            {
-              target_load = std::numeric_limits<double>::infinity();
-            }
+          target_load = to_number(load);
           require(std::isfinite(target_load),
                   "'Loading/Target load' = " + load +
                     " is not a finite number");
@@ -667,14 +675,7 @@ namespace viscoslide
               words->push_back(w);
             if (words != nullptr && w == "half-plane")
               continue;
-            double v = std::numeric_limits<double>::quiet_NaN();
-            try
-              {
-                v = Utilities::string_to_double(w);
-              }
-            catch (...)
-              {
-              }
+            const double v = to_number(w);
             require(std::isfinite(v) && (!positive || v > 0),
                     "'Sweep/" + name + "' holds '" + w + "': " +
                       (positive ? "each entry must be a positive number"

@@ -24,13 +24,17 @@
 
 #include <viscoslide/contact_problem.h>
 
-#include <cstdio>
 #include <viscoslide/mesh.h>
 #include <viscoslide/newton.h>
 #include <viscoslide/steady_state.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace viscoslide
 {
@@ -759,19 +763,10 @@ namespace viscoslide
       std::vector<const TrilinosWrappers::MPI::Vector *>{&solution,
                                                          &old_solution,
                                                          &last_increment});
-    IndexSet history_relevant;
-    DoFTools::extract_locally_relevant_dofs(history_dof_handler,
-                                            history_relevant);
-    std::array<TrilinosWrappers::MPI::Vector, n_history_components> ghosted;
-    std::vector<const TrilinosWrappers::MPI::Vector *>              in;
-    for (unsigned int c = 0; c < n_history_components; ++c)
-      {
-        ghosted[c].reinit(history_dof_handler.locally_owned_dofs(),
-                          history_relevant,
-                          mpi_communicator);
-        ghosted[c] = history[c];
-        in.push_back(&ghosted[c]);
-      }
+    const auto ghosted = ghosted_history();
+    std::vector<const TrilinosWrappers::MPI::Vector *> in;
+    for (const auto &h : ghosted)
+      in.push_back(&h);
     history_transfer.prepare_for_coarsening_and_refinement(in);
 
     triangulation.execute_coarsening_and_refinement();
@@ -805,6 +800,174 @@ namespace viscoslide
   }
 
 
+  // SolutionTransfer needs the history with the ghost values of the
+  // cells' neighbours.
+  std::array<TrilinosWrappers::MPI::Vector,
+             ContactProblem::n_history_components>
+  ContactProblem::ghosted_history() const
+  {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(history_dof_handler, relevant);
+    std::array<TrilinosWrappers::MPI::Vector, n_history_components> ghosted;
+    for (unsigned int c = 0; c < n_history_components; ++c)
+      {
+        ghosted[c].reinit(history_dof_handler.locally_owned_dofs(),
+                          relevant,
+                          mpi_communicator);
+        ghosted[c] = history[c];
+      }
+    return ghosted;
+  }
+
+
+  // A checkpoint of the transient sliding phase, taken between two steps:
+  // the mesh with the committed solution, the predictor and the history
+  // attached (the same SolutionTransfer that carries them through
+  // refinement serializes them with p4est), and every scalar the sliding
+  // loop needs in state.txt, the doubles in hexadecimal so that a resumed
+  // run continues bit for bit. It is written into checkpoint.tmp/, which
+  // then replaces checkpoint/, so that a kill at any moment leaves one
+  // complete checkpoint.
+  void
+  ContactProblem::write_checkpoint()
+  {
+    TimerOutput::Scope t(timer, "checkpoint");
+    namespace fs       = std::filesystem;
+    const fs::path dir = writer.path("checkpoint"),
+                   tmp = writer.path("checkpoint.tmp"),
+                   old = writer.path("checkpoint.old");
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    if (root)
+      {
+        fs::remove_all(tmp);
+        fs::create_directories(tmp);
+      }
+    MPI_Barrier(mpi_communicator);
+
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      solution_transfer(dof_handler), history_transfer(history_dof_handler);
+    solution_transfer.prepare_for_serialization(
+      std::vector<const TrilinosWrappers::MPI::Vector *>{&old_solution,
+                                                         &last_increment});
+    const auto ghosted = ghosted_history();
+    std::vector<const TrilinosWrappers::MPI::Vector *> in;
+    for (const auto &h : ghosted)
+      in.push_back(&h);
+    history_transfer.prepare_for_serialization(in);
+    triangulation.save((tmp / "mesh").string());
+
+    if (root)
+      {
+        std::ostringstream out;
+        out << std::hexfloat << "viscoslide-checkpoint 1\n"
+            << "step_number " << step_number << "\nhistory_rows "
+            << history_rows << "\napproach_rows " << approach_rows
+            << "\ncommitted " << committed.delta << " " << committed.s << " "
+            << committed.time << " " << committed.dt << "\nlast_increment "
+            << last_increment_delta << " " << last_increment_s
+            << "\ntarget_force " << target_force << "\nplan " << slide_plan.s0
+            << " " << slide_plan.L0 << " " << slide_plan.distance << " "
+            << slide_plan.window << "\nsamples " << samples.size() << "\n";
+        for (const auto &x : samples)
+          {
+            out << x.s;
+            for (const double v : x.value)
+              out << " " << v;
+            out << "\n";
+          }
+        write_atomically((tmp / "state.txt").string(), out.str());
+        if (fs::exists(dir))
+          fs::rename(dir, old);
+        fs::rename(tmp, dir);
+        fs::remove_all(old);
+      }
+    MPI_Barrier(mpi_communicator);
+  }
+
+
+  bool
+  ContactProblem::has_checkpoint(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    return fs::exists(fs::path(directory) / "checkpoint" / "state.txt");
+  }
+
+
+  // The inverse of write_checkpoint(), in place of setup, approach and the
+  // start of the sliding phase. A checkpoint left as checkpoint.old by a
+  // kill between the two renames is taken back first.
+  void
+  ContactProblem::read_checkpoint()
+  {
+    namespace fs       = std::filesystem;
+    const fs::path dir = writer.path("checkpoint");
+    const fs::path old = writer.path("checkpoint.old");
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
+        !fs::exists(dir) && fs::exists(old))
+      fs::rename(old, dir);
+    MPI_Barrier(mpi_communicator);
+    std::ifstream in(dir / "state.txt");
+    if (!in)
+      throw Parameters::ExcInvalidInput("no checkpoint to resume from in '" +
+                                        dir.string() + "'");
+    // operator>> of libstdc++ does not read hexfloats; strtod does.
+    auto next = [&](const char *name) {
+      std::string word;
+      if (name != nullptr && (!(in >> word) || word != name))
+        throw Parameters::ExcInvalidInput("checkpoint '" + dir.string() +
+                                          "/state.txt' is damaged (expected '" +
+                                          name + "')");
+      in >> word;
+      if (!in)
+        throw Parameters::ExcInvalidInput("checkpoint '" + dir.string() +
+                                          "/state.txt' is truncated");
+      return std::strtod(word.c_str(), nullptr);
+    };
+    if (next("viscoslide-checkpoint") != 1)
+      throw Parameters::ExcInvalidInput("checkpoint '" + dir.string() +
+                                        "' has another version");
+    step_number          = static_cast<unsigned int>(next("step_number"));
+    history_rows         = static_cast<unsigned int>(next("history_rows"));
+    approach_rows        = static_cast<unsigned int>(next("approach_rows"));
+    committed.delta      = next("committed");
+    committed.s          = next(nullptr);
+    committed.time       = next(nullptr);
+    committed.dt         = next(nullptr);
+    last_increment_delta = next("last_increment");
+    last_increment_s     = next(nullptr);
+    target_force         = next("target_force");
+    slide_plan.s0        = next("plan");
+    slide_plan.L0        = next(nullptr);
+    slide_plan.distance  = next(nullptr);
+    slide_plan.window    = next(nullptr);
+    samples.resize(static_cast<std::size_t>(next("samples")));
+    for (auto &x : samples)
+      {
+        x.s = next(nullptr);
+        for (double &v : x.value)
+          v = next(nullptr);
+      }
+    current = committed;
+
+    make_block(triangulation, prm);
+    triangulation.load((dir / "mesh").string());
+    setup_system();
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      solution_transfer(dof_handler), history_transfer(history_dof_handler);
+    TrilinosWrappers::MPI::Vector u_old(locally_owned_dofs, mpi_communicator),
+      du(locally_owned_dofs, mpi_communicator);
+    std::vector<TrilinosWrappers::MPI::Vector *> out{&u_old, &du};
+    solution_transfer.deserialize(out);
+    old_solution   = u_old;
+    solution       = u_old;
+    last_increment = du;
+    std::vector<TrilinosWrappers::MPI::Vector *> history_out;
+    for (auto &h : history)
+      history_out.push_back(&h);
+    history_transfer.deserialize(history_out);
+  }
+
+
   void
   ContactProblem::record_step(const std::string &phase)
   {
@@ -818,6 +981,7 @@ namespace viscoslide
     using F               = CsvTable;
     if (phase == "slide")
       {
+        ++history_rows;
         const double V = prm.sliding.speed * scales.eps / scales.tau_ref;
         const double rate =
           last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
@@ -836,20 +1000,23 @@ namespace viscoslide
            std::to_string(dof_handler.n_dofs())});
       }
     else
-      approach_table->add_row(
-        {std::to_string(step_number),
-         phase,
-         F::format(committed.time / scales.tau_ref),
-         F::format(committed.delta / scales.eps),
-         F::format(sq.normal_force / scales.force),
-         F::format(sq.tangential_force / scales.force),
-         F::format(sq.contact_length / scales.R),
-         F::format(sq.minimum_gap / scales.eps),
-         std::to_string(last_newton_iterations),
-         std::to_string(last_step_cuts),
-         std::to_string(last_step_relaxed ? 1 : 0),
-         std::to_string(dof_handler.n_dofs()),
-         std::to_string(triangulation.n_global_active_cells())});
+      {
+        ++approach_rows;
+        approach_table->add_row(
+          {std::to_string(step_number),
+           phase,
+           F::format(committed.time / scales.tau_ref),
+           F::format(committed.delta / scales.eps),
+           F::format(sq.normal_force / scales.force),
+           F::format(sq.tangential_force / scales.force),
+           F::format(sq.contact_length / scales.R),
+           F::format(sq.minimum_gap / scales.eps),
+           std::to_string(last_newton_iterations),
+           std::to_string(last_step_cuts),
+           std::to_string(last_step_relaxed ? 1 : 0),
+           std::to_string(dof_handler.n_dofs()),
+           std::to_string(triangulation.n_global_active_cells())});
+      }
     pcout << "  step " << std::setw(4) << step_number << "  " << std::setw(8)
           << phase << "  delta_hat " << std::setw(9) << committed.delta
           << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
@@ -1061,119 +1228,173 @@ namespace viscoslide
 
   // Phase 2 of the paper: the profile h(x - s) moves with s = V t over the
   // fixed surface until Fn (or delta), Ft and L are steady over a window.
+  // A resumed run starts from the plan and the samples of its checkpoint.
   void
-  ContactProblem::slide()
+  ContactProblem::slide(const bool resumed)
   {
     const double V     = prm.sliding.speed * scales.eps / scales.tau_ref;
     const double h_min = prm.mesh.finest_cell;
-    const double L0    = std::max(last_quantities.contact_length, 10. * h_min);
-    const double tau_c = scales.tau_arm / prm.material.E0_over_Einf;
-    // The relaxation length V tau_c sets the transient, but only as far as
-    // it is comparable to the contact: faster than that, the material
-    // crosses the contact unrelaxed and the contact is steady once the
-    // material deformed during the approach has left it.
-    const double relaxation_length = std::min(V * tau_c, 4. * L0);
-    const double distance          = prm.sliding.max_distance > 0
-                                       ? prm.sliding.max_distance
-                                       : 4. * L0 + 30. * relaxation_length;
-    const double window            = prm.sliding.steady_window > 0
-                                       ? prm.sliding.steady_window
-                                       : std::max(L0, 2. * relaxation_length);
-    if (committed.s + distance + 2. * L0 > prm.geometry.domain_width / 2)
-      throw Parameters::ExcInvalidInput(
-        "'Geometry/Domain width' = " +
-        std::to_string(prm.geometry.domain_width) + " is too small to slide " +
-        std::to_string(distance) +
-        " eps and stay 2 L = " + std::to_string(2 * L0) +
-        " eps away from the lateral boundary; it must be at least " +
-        std::to_string(2 * (committed.s + distance + 2 * L0)) +
-        " (or set 'Sliding/Maximum sliding distance')");
-
-    force_control   = prm.sliding.control == "force";
-    target_force    = last_quantities.normal_force;
-    const double ds = prm.sliding.increment * h_min;
-    const double dt = ds / V;
-    const double s0 = committed.s;
-    slide_distance  = distance;
-    slid            = 0.;
-    pcout << "Sliding at V_hat = " << prm.sliding.speed << " under "
-          << prm.sliding.control << " control: up to " << distance
-          << " eps in steps of " << ds << " eps, steady over " << window
+    const std::vector<std::string> columns{"time_over_tau",
+                                           "s_over_eps",
+                                           "delta_hat",
+                                           "F_n_hat",
+                                           "F_t_hat",
+                                           "F_t_profile_hat",
+                                           "mu",
+                                           "L_hat",
+                                           "dissipation_rate_hat",
+                                           "mu_energy",
+                                           "newton_iterations",
+                                           "n_dofs"};
+    const std::string              comment =
+      version_string() + "; time unit: " + prm.material.time_constant + " time";
+    if (!resumed)
+      {
+        auto &plan = slide_plan;
+        plan.L0    = std::max(last_quantities.contact_length, 10. * h_min);
+        const double tau_c = scales.tau_arm / prm.material.E0_over_Einf;
+        // The relaxation length V tau_c sets the transient, but only as far
+        // as it is comparable to the contact: faster than that, the
+        // material crosses the contact unrelaxed and the contact is steady
+        // once the material deformed during the approach has left it.
+        const double relaxation_length = std::min(V * tau_c, 4. * plan.L0);
+        plan.distance                  = prm.sliding.max_distance > 0
+                                           ? prm.sliding.max_distance
+                                           : 4. * plan.L0 + 30. * relaxation_length;
+        plan.window                    = prm.sliding.steady_window > 0
+                                           ? prm.sliding.steady_window
+                                           : std::max(plan.L0, 2. * relaxation_length);
+        plan.s0                        = committed.s;
+        if (plan.s0 + plan.distance + 2. * plan.L0 >
+            prm.geometry.domain_width / 2)
+          throw Parameters::ExcInvalidInput(
+            "'Geometry/Domain width' = " +
+            std::to_string(prm.geometry.domain_width) +
+            " is too small to slide " + std::to_string(plan.distance) +
+            " eps and stay 2 L = " + std::to_string(2 * plan.L0) +
+            " eps away from the lateral boundary; it must be at least " +
+            std::to_string(2 * (plan.s0 + plan.distance + 2 * plan.L0)) +
+            " (or set 'Sliding/Maximum sliding distance')");
+        target_force = last_quantities.normal_force;
+        samples.clear();
+        history_rows  = 0;
+        history_table = std::make_unique<CsvTable>(writer.path("history.csv"),
+                                                   columns,
+                                                   comment,
+                                                   mpi_communicator);
+      }
+    else
+      history_table = std::make_unique<CsvTable>(writer.path("history.csv"),
+                                                 columns,
+                                                 history_rows,
+                                                 mpi_communicator);
+    const auto &plan = slide_plan;
+    force_control    = prm.sliding.control == "force";
+    const double ds  = prm.sliding.increment * h_min;
+    const double dt  = ds / V;
+    slide_distance   = plan.distance;
+    slid             = committed.s - plan.s0;
+    pcout << (resumed ? "Resuming sliding" : "Sliding")
+          << " at V_hat = " << prm.sliding.speed << " under "
+          << prm.sliding.control << " control: up to " << plan.distance
+          << " eps in steps of " << ds << " eps, steady over " << plan.window
           << " eps" << std::endl;
 
-    history_table = std::make_unique<CsvTable>(
-      writer.path("history.csv"),
-      std::vector<std::string>{"time_over_tau",
-                               "s_over_eps",
-                               "delta_hat",
-                               "F_n_hat",
-                               "F_t_hat",
-                               "F_t_profile_hat",
-                               "mu",
-                               "L_hat",
-                               "dissipation_rate_hat",
-                               "mu_energy",
-                               "newton_iterations",
-                               "n_dofs"},
-      version_string() + "; time unit: " + prm.material.time_constant + " time",
-      mpi_communicator);
-
-    // Steady state: over the last `window` of sliding, the controlled
-    // quantity's conjugate (Fn or delta), Ft and L each vary by less than
-    // the tolerance relative to their size (or a floor for small values).
-    struct Sample
-    {
-      double s, value[3];
+    // Steady state: the means of the controlled quantity's conjugate (Fn
+    // or delta), Ft and L over the two halves of the last `window` of
+    // sliding differ by less than the tolerance relative to their size (or
+    // a floor for small values). Means, not single steps: with adhesion the
+    // contact edges jump from node to node, and Ft (eq. 2) flickers with
+    // the period of the finest cell by up to tens of percent where V tau is
+    // below it, about a steady mean.
+    using Sample   = SlideSample;
+    auto in_window = [&](const double from, const double to) {
+      Sample      mean{};
+      std::size_t n = 0;
+      for (const auto &x : samples)
+        if (x.s > from && x.s <= to)
+          {
+            for (unsigned int k = 0; k < Sample::n_values; ++k)
+              mean.value[k] += x.value[k];
+            ++n;
+          }
+      for (double &v : mean.value)
+        v /= std::max<std::size_t>(n, 1);
+      return mean;
     };
-    std::vector<Sample> samples;
-    bool                steady = false;
-    while (committed.s - s0 < distance - 1e-9 * ds && !steady)
+    auto window_is_steady = [&] {
+      const double end = committed.s;
+      if (end - plan.s0 < plan.window + plan.L0)
+        return false;
+      const Sample first  = in_window(end - plan.window, end - plan.window / 2),
+                   second = in_window(end - plan.window / 2, end);
+      const unsigned int judged[3] = {force_control ? Sample::delta
+                                                    : Sample::normal_force,
+                                      Sample::tangential_force,
+                                      Sample::contact_length};
+      const double floor[3] = {force_control ? scales.eps : 1e-3 * scales.force,
+                               1e-3 * std::abs(
+                                        second.value[Sample::normal_force]) +
+                                 1e-6 * scales.force,
+                               h_min};
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const double size = std::max({floor[k],
+                                        std::abs(first.value[judged[k]]),
+                                        std::abs(second.value[judged[k]])});
+          if (std::abs(second.value[judged[k]] - first.value[judged[k]]) >
+              prm.sliding.steady_tolerance * size)
+            return false;
+        }
+      return true;
+    };
+
+    bool         steady           = false;
+    unsigned int checkpointed_row = history_rows;
+    while (committed.s - plan.s0 < plan.distance - 1e-9 * ds && !steady)
       {
         LoadState target = committed;
         target.s += ds;
         target.time += dt;
         target.dt = dt;
-        slid      = target.s - s0;
+        slid      = target.s - plan.s0;
         if (!advance_to(target, "slide"))
           abort_run(target);
         const auto &q = last_quantities;
         samples.push_back({committed.s,
-                           {force_control ? committed.delta : q.normal_force,
+                           {committed.delta,
+                            q.normal_force,
                             q.tangential_force,
-                            q.contact_length}});
-        if (committed.s - s0 < window + L0)
-          continue;
-        const double floor[3] = {force_control ? scales.eps
-                                               : 1e-3 * scales.force,
-                                 1e-3 * std::abs(q.normal_force) +
-                                   1e-6 * scales.force,
-                                 h_min};
-        steady = true;
-        for (unsigned int k = 0; k < 3; ++k)
+                            q.profile_force,
+                            q.contact_length,
+                            last_dissipation_rate}});
+        steady = window_is_steady();
+        if (!steady && prm.output.checkpoint_every > 0 &&
+            history_rows >= checkpointed_row + prm.output.checkpoint_every)
           {
-            double lo = 1e300, hi = -1e300, size = floor[k];
-            for (auto it = samples.rbegin();
-                 it != samples.rend() && it->s >= committed.s - window;
-                 ++it)
-              {
-                lo   = std::min(lo, it->value[k]);
-                hi   = std::max(hi, it->value[k]);
-                size = std::max(size, std::abs(it->value[k]));
-              }
-            steady = steady && hi - lo <= prm.sliding.steady_tolerance * size;
+            write_checkpoint();
+            checkpointed_row = history_rows;
           }
       }
 
+    // The steady values are the means over the last window (over all of
+    // the sliding if it was shorter).
+    const Sample      mean = in_window(committed.s - plan.window, committed.s);
+    SurfaceQuantities q    = last_quantities;
+    q.normal_force         = mean.value[Sample::normal_force];
+    q.tangential_force     = mean.value[Sample::tangential_force];
+    q.profile_force        = mean.value[Sample::profile_force];
+    q.contact_length       = mean.value[Sample::contact_length];
     write_steady_state(prm.sliding.speed,
-                       committed.delta,
-                       last_quantities,
-                       last_dissipation_rate,
+                       mean.value[Sample::delta],
+                       q,
+                       mean.value[Sample::dissipation_rate],
                        steady,
-                       committed.s - s0,
+                       committed.s - plan.s0,
                        "transient");
     write_profile("surface_profile_steady.csv");
     pcout << (steady ? "Steady state" : "NO steady state") << " after "
-          << committed.s - s0 << " eps" << std::endl;
+          << committed.s - plan.s0 << " eps" << std::endl;
     force_control = false;
   }
 
@@ -1235,42 +1456,58 @@ namespace viscoslide
                      std::to_string(steady.n_dofs())});
     };
 
-    // A listed speed that cannot be reached gets its row with steady = 0
-    // (values of the last converged speed, whose V_hat it shows), and the
-    // continuation goes on from there to the next listed speed.
-    const auto &speeds = prm.sliding.speeds;
-    std::string failed;
-    for (unsigned int k = 0; k < speeds.size(); ++k)
+    // The stations of the continuation: the listed speeds, then the loads
+    // of the load path at the last speed. A station that cannot be reached
+    // gets its row with steady = 0 (values of the last converged state,
+    // whose V_hat, delta and F_n it shows), and the continuation goes on
+    // from there to the next one.
+    const auto  &speeds  = prm.sliding.speeds;
+    const auto  &loads   = prm.sliding.load_path;
+    const bool   force   = prm.sliding.control == "force";
+    const double unit    = force ? scales.force : scales.eps;
+    const auto   n_total = speeds.size() + loads.size();
+    std::string  failed;
+    for (unsigned int k = 0; k < n_total; ++k)
       {
-        const bool converged = steady.continue_to(speeds[k], on_converged);
+        const bool   is_speed = k < speeds.size();
+        const double value    = is_speed ? speeds[k] : loads[k - speeds.size()];
+        const bool   converged =
+          is_speed ? steady.continue_to(value, on_converged)
+                     : steady.continue_to_load(value * unit, on_converged);
         write_steady_state(
           V_hat, delta, q, rate, converged, 0., "steady-state");
         if (!converged)
           {
-            failed += (failed.empty() ? "" : ", ") + std::to_string(speeds[k]);
+            failed += std::string(failed.empty() ? "" : ", ") +
+                      (is_speed ? "V_hat "
+                       : force  ? "F_hat "
+                                : "delta_hat ") +
+                      CsvTable::format(value);
             continue;
           }
         char suffix[16];
         std::snprintf(suffix, sizeof(suffix), "_%02u", k);
-        // With a list, a profile per speed; the last one also under the
+        // With a list, a profile per station; the last one also under the
         // name the single-speed run uses.
-        if (speeds.size() > 1)
+        if (n_total > 1)
           steady.write_profile(writer.path("surface_profile_steady" +
                                            std::string(suffix) + ".csv"));
-        if (k + 1 == speeds.size())
+        if (k + 1 == n_total)
           steady.write_profile(writer.path("surface_profile_steady.csv"));
         if (prm.output.write_fields)
           steady.write_fields(writer, k);
         if (progress != nullptr)
-          pcout << "  V_hat " << speeds[k] << " (" << k + 1 << "/"
-                << speeds.size() << ")  ["
-                << progress->report((k + 1.) / speeds.size()) << "]"
-                << std::endl;
+          pcout << "  "
+                << (is_speed ? "V_hat "
+                    : force  ? "F_hat "
+                             : "delta_hat ")
+                << value << " (" << k + 1 << "/" << n_total << ")  ["
+                << progress->report((k + 1.) / n_total) << "]" << std::endl;
       }
     if (!failed.empty())
       throw std::runtime_error(
-        "The steady-state solver did not converge at V_hat = " + failed +
-        "; their rows in steady_state.csv hold the last converged speed "
+        "The steady-state solver did not converge at " + failed +
+        "; their rows in steady_state.csv hold the last converged state "
         "with steady = 0");
   }
 
@@ -1344,36 +1581,51 @@ namespace viscoslide
 
 
   void
-  ContactProblem::run()
+  ContactProblem::run(const bool resume)
   {
     const std::string comment =
       version_string() + "; time unit: " + prm.material.time_constant +
       " time; forces per unit length in (pi dgamma^2 E0* R)^(1/3)";
-    approach_table =
-      std::make_unique<CsvTable>(writer.path("approach.csv"),
-                                 std::vector<std::string>{"step",
-                                                          "phase",
-                                                          "time_over_tau",
-                                                          "delta_hat",
-                                                          "F_n_hat",
-                                                          "F_t_hat",
-                                                          "L_hat",
-                                                          "min_gap_over_eps",
-                                                          "newton_iterations",
-                                                          "step_cuts",
-                                                          "jump",
-                                                          "n_dofs",
-                                                          "n_cells"},
-                                 comment,
-                                 mpi_communicator);
-
-    make_block(triangulation, prm);
-    setup_system();
-    committed.delta = prm.loading.initial_approach;
-    current         = committed;
-    refine_initial_mesh();
-    pcout << "Initial mesh: " << triangulation.n_global_active_cells()
-          << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
+    const std::vector<std::string> approach_columns{"step",
+                                                    "phase",
+                                                    "time_over_tau",
+                                                    "delta_hat",
+                                                    "F_n_hat",
+                                                    "F_t_hat",
+                                                    "L_hat",
+                                                    "min_gap_over_eps",
+                                                    "newton_iterations",
+                                                    "step_cuts",
+                                                    "jump",
+                                                    "n_dofs",
+                                                    "n_cells"};
+    if (resume)
+      {
+        read_checkpoint();
+        approach_table = std::make_unique<CsvTable>(writer.path("approach.csv"),
+                                                    approach_columns,
+                                                    approach_rows,
+                                                    mpi_communicator);
+        writer.resume_collection("solution", step_number);
+        writer.resume_collection("surface", step_number);
+        pcout << "Resumed from the checkpoint of step " << step_number - 1
+              << ": " << triangulation.n_global_active_cells() << " cells, "
+              << dof_handler.n_dofs() << " dofs" << std::endl;
+      }
+    else
+      {
+        approach_table = std::make_unique<CsvTable>(writer.path("approach.csv"),
+                                                    approach_columns,
+                                                    comment,
+                                                    mpi_communicator);
+        make_block(triangulation, prm);
+        setup_system();
+        committed.delta = prm.loading.initial_approach;
+        current         = committed;
+        refine_initial_mesh();
+        pcout << "Initial mesh: " << triangulation.n_global_active_cells()
+              << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
+      }
 
     auto fail = [&](const LoadState &target) { abort_run(target); };
 
@@ -1397,16 +1649,18 @@ namespace viscoslide
         }
     };
 
-    {
-      LoadState first = committed;
-      if (!advance_to(first, "start"))
-        fail(first);
-    }
-    if (prm.loading.has_target_load())
-      approach_to_load();
-    else
-      ramp("approach", prm.loading.final_approach);
-    if (prm.loading.hold_time > 0)
+    // The approach and the hold; a resumed run has them behind it.
+    if (!resume)
+      {
+        LoadState first = committed;
+        if (!advance_to(first, "start"))
+          fail(first);
+        if (prm.loading.has_target_load())
+          approach_to_load();
+        else
+          ramp("approach", prm.loading.final_approach);
+      }
+    if (prm.loading.hold_time > 0 && !resume)
       {
         const double       t0 = committed.time, T = prm.loading.hold_time;
         const unsigned int n     = prm.loading.hold_steps;
@@ -1429,7 +1683,7 @@ namespace viscoslide
         return;
       }
     if (prm.sliding.speed > 0)
-      slide();
+      slide(resume);
     if (prm.loading.retract)
       ramp("retract", prm.loading.retract_to);
 
@@ -1438,6 +1692,9 @@ namespace viscoslide
         (prm.output.fields_every == 0 ||
          (step_number - 1) % prm.output.fields_every != 0))
       write_fields();
+    // A finished run needs its checkpoint no more.
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::filesystem::remove_all(writer.path("checkpoint"));
     timer.print_wall_time_statistics(mpi_communicator);
   }
 } // namespace viscoslide

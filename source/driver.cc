@@ -141,23 +141,6 @@ namespace viscoslide
       return s.size() > 300 ? s.substr(0, 297) + "..." : s;
     }
 
-    // Writes `text` to `path` through a temporary file and a rename, so
-    // that a killed run leaves the old or the new file, never half of one.
-    void
-    write_atomically(const fs::path &path, const std::string &text)
-    {
-      const fs::path tmp = path.string() + ".tmp";
-      {
-        std::ofstream out(tmp);
-        out << text;
-        out.flush();
-        if (!out)
-          throw std::runtime_error("cannot write '" + tmp.string() +
-                                   "' (disk full?)");
-      }
-      fs::rename(tmp, path);
-    }
-
     std::string
     read_file(const fs::path &path)
     {
@@ -299,12 +282,15 @@ namespace viscoslide
     // Runs one case; returns "" or the reason it failed. Failures of the
     // solver are collective, so every process returns the same.
     std::string
-    run_case(const Case &c, const Progress &progress, MPI_Comm comm)
+    run_case(const Case     &c,
+             const Progress &progress,
+             MPI_Comm        comm,
+             const bool      resume = false)
     {
       try
         {
           ContactProblem problem(c.parameters, comm, &progress);
-          problem.run();
+          problem.run(resume);
           return "";
         }
       catch (std::exception &e)
@@ -380,13 +366,33 @@ namespace viscoslide
     // A single run: its files go straight into the Output directory.
     if (cases.size() == 1 && cases[0].name.empty())
       {
-        const Case &c = cases[0];
+        const Case    &c = cases[0];
+        const fs::path dir(c.parameters.output.directory);
+        const bool     resume =
+          options.resume && ContactProblem::has_checkpoint(dir);
         try
           {
-            OutputWriter::prepare_directory(c.parameters.output.directory,
-                                            options.overwrite,
-                                            comm);
-            write_provenance(c, comm);
+            if (resume)
+              {
+                if (case_identity(read_file(dir / "parameters.prm")) !=
+                    case_identity(c.parameter_text))
+                  throw std::runtime_error(
+                    "cannot resume in '" + dir.string() +
+                    "': its run had other parameters (parameters.prm)");
+              }
+            else
+              {
+                if (options.resume && fs::exists(dir / "parameters.prm"))
+                  throw std::runtime_error(
+                    "nothing to resume in '" + dir.string() +
+                    "': it holds no checkpoint (the run finished, or was "
+                    "killed before its first checkpoint); rerun it with "
+                    "--overwrite");
+                OutputWriter::prepare_directory(dir.string(),
+                                                options.overwrite,
+                                                comm);
+                write_provenance(c, comm);
+              }
           }
         catch (std::exception &e)
           {
@@ -399,7 +405,7 @@ namespace viscoslide
                     << Utilities::MPI::n_mpi_processes(comm)
                     << " MPI process(es)\n";
         const Progress    progress(1, 1);
-        const std::string failure = run_case(c, progress, comm);
+        const std::string failure = run_case(c, progress, comm, resume);
         if (!failure.empty() && root)
           std::cerr << "\nviscoslide: run failed:\n" << failure << std::endl;
         return failure.empty() ? 0 : 2;
@@ -478,14 +484,23 @@ namespace viscoslide
             continue;
           }
         progress.start_case(k + 1, c.name);
+        // An interrupted case resumes from its checkpoint if asked to and
+        // its parameters are those of the file; otherwise it starts again.
+        const bool resume = options.resume && read_status(dir).state.empty() &&
+                            ContactProblem::has_checkpoint(dir) &&
+                            case_identity(read_file(dir / "parameters.prm")) ==
+                              case_identity(c.parameter_text);
         std::string failure;
         try
           {
             std::error_code ec; // prepare_directory() reports the failure
-            if (root)
+            if (root && !resume)
               fs::remove_all(dir, ec);
-            OutputWriter::prepare_directory(dir.string(), true, comm);
-            write_provenance(c, comm);
+            if (!resume)
+              {
+                OutputWriter::prepare_directory(dir.string(), true, comm);
+                write_provenance(c, comm);
+              }
           }
         catch (std::exception &e)
           {
@@ -502,7 +517,7 @@ namespace viscoslide
             std::cout << std::endl;
           }
         if (failure.empty())
-          failure = run_case(c, progress, comm);
+          failure = run_case(c, progress, comm, resume);
         if (root)
           {
             try

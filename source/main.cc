@@ -13,7 +13,8 @@
 namespace
 {
   const char *usage =
-    "Usage: viscoslide [--overwrite] [--redo failed|all] [--dry-run] "
+    "Usage: viscoslide [--overwrite] [--resume] [--redo failed|all] "
+    "[--dry-run] "
     "PARAMETER_FILE.prm|.json\n"
     "       viscoslide --print-parameters [prm|json]\n"
     "       viscoslide --help | --version\n"
@@ -26,6 +27,9 @@ namespace
     "                      their defaults (see --print-parameters)\n"
     "  --overwrite         allow writing into an output directory that\n"
     "                      already holds results (a sweep: rerun all)\n"
+    "  --resume            continue a killed run (each unfinished case of a\n"
+    "                      sweep) from its last checkpoint (Output/\n"
+    "                      Checkpoint every), with the same parameters\n"
     "  --redo failed|all   a sweep reruns its failed (or all) finished\n"
     "                      cases; by default they are skipped\n"
     "  --dry-run           check the file, list the case folders (with a\n"
@@ -73,6 +77,8 @@ main(int argc, char *argv[])
         }
       if (args[i] == "--overwrite")
         options.overwrite = true;
+      else if (args[i] == "--resume")
+        options.resume = true;
       else if (args[i] == "--dry-run")
         options.dry_run = true;
       else if (args[i] == "--redo")
@@ -106,6 +112,13 @@ main(int argc, char *argv[])
     {
       if (root)
         std::cerr << usage;
+      return 1;
+    }
+  if (options.resume && options.overwrite)
+    {
+      if (root)
+        std::cerr << "viscoslide: --resume continues a run, --overwrite "
+                     "starts it again: give one of them\n";
       return 1;
     }
 

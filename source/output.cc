@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 
 #ifndef VISCOSLIDE_VERSION
@@ -52,6 +53,46 @@ namespace viscoslide
     if (!*file)
       throw std::runtime_error("writing a row of a CSV file failed (disk "
                                "full?)");
+  }
+
+  CsvTable::CsvTable(const std::string              &filename,
+                     const std::vector<std::string> &columns,
+                     const std::size_t               keep_rows,
+                     MPI_Comm                        comm)
+    : n_columns(columns.size())
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ifstream in(filename);
+    if (!in)
+      throw Parameters::ExcInvalidInput("cannot read '" + filename +
+                                        "' to continue it");
+    std::string kept, line;
+    std::size_t rows        = 0;
+    bool        header_seen = false;
+    while (std::getline(in, line))
+      {
+        const bool comment = !line.empty() && line[0] == '#';
+        if (header_seen && !comment && rows == keep_rows)
+          break; // rows written after the checkpoint
+        kept += line + '\n';
+        if (comment)
+          continue;
+        if (header_seen)
+          ++rows;
+        header_seen = true;
+      }
+    if (rows < keep_rows)
+      throw Parameters::ExcInvalidInput(
+        "'" + filename + "' holds " + std::to_string(rows) +
+        " rows, fewer than the " + std::to_string(keep_rows) +
+        " of the checkpoint");
+    in.close();
+    write_atomically(filename, kept);
+    file = std::make_unique<std::ofstream>(filename, std::ios::app);
+    if (!*file)
+      throw Parameters::ExcInvalidInput("cannot open '" + filename +
+                                        "' for writing");
   }
 
   std::string
@@ -121,9 +162,28 @@ namespace viscoslide
     records.emplace_back(time, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        std::ofstream pvd(path(name + ".pvd"));
+        std::ostringstream pvd;
         DataOutBase::write_pvd_record(pvd, records);
+        write_atomically(path(name + ".pvd"), pvd.str());
       }
+  }
+
+
+  void
+  OutputWriter::resume_collection(const std::string &name,
+                                  const unsigned int before)
+  {
+    auto &records = pvd_records[name];
+    records.clear();
+    std::ifstream    in(path(name + ".pvd"));
+    const std::regex dataset("timestep=\"([^\"]*)\".*file=\"(" + name +
+                             "_([0-9]+)\\.pvtu)\"");
+    std::string      line;
+    std::smatch      m;
+    while (std::getline(in, line))
+      if (std::regex_search(line, m, dataset) &&
+          std::stoul(m[3].str()) < before)
+        records.emplace_back(std::stod(m[1].str()), m[2].str());
   }
 
   template void
@@ -186,6 +246,21 @@ namespace viscoslide
     if (done > 0.02)
       s << ", ~" << duration(elapsed / done * (n_to_run - done)) << " left";
     return s.str();
+  }
+
+
+  void
+  write_atomically(const std::string &path, const std::string &text)
+  {
+    const std::string tmp = path + ".tmp";
+    {
+      std::ofstream out(tmp);
+      out << text;
+      out.flush();
+      if (!out)
+        throw std::runtime_error("cannot write '" + tmp + "' (disk full?)");
+    }
+    std::filesystem::rename(tmp, path);
   }
 
 

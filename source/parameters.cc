@@ -87,6 +87,15 @@ namespace viscoslide
                         "Write the surface profile CSV every this many "
                         "accepted steps (and always after the last step). "
                         "0: only the last.");
+      prm.declare_entry(
+        "Checkpoint every",
+        "100",
+        Patterns::Integer(0),
+        "Transient sliding: write a checkpoint (mesh, solution, history, "
+        "sliding position and steady-state window) into OUTPUT/checkpoint "
+        "every this many sliding steps, so that `viscoslide --resume` "
+        "continues a killed run from there (doc/restart.md). The previous "
+        "checkpoint is replaced only once the new one is complete. 0: none.");
       prm.leave_subsection();
     }
 
@@ -94,11 +103,12 @@ namespace viscoslide
     Output::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      directory     = prm.get("Output directory");
-      verbosity     = prm.get("Verbosity");
-      write_fields  = prm.get_bool("Write fields");
-      fields_every  = prm.get_integer("Fields every");
-      profile_every = prm.get_integer("Surface profile every");
+      directory        = prm.get("Output directory");
+      verbosity        = prm.get("Verbosity");
+      write_fields     = prm.get_bool("Write fields");
+      fields_every     = prm.get_integer("Fields every");
+      profile_every    = prm.get_integer("Surface profile every");
+      checkpoint_every = prm.get_integer("Checkpoint every");
       prm.leave_subsection();
       require(!directory.empty(),
               "'Output/Output directory' must not be empty");
@@ -474,18 +484,22 @@ namespace viscoslide
         "contact length after the approach and tau_c the "
         "retardation time; refused if the indenter would come closer "
         "than 2 L to the lateral boundary.");
-      prm.declare_entry("Steady-state tolerance",
-                        "1e-3",
-                        Patterns::Double(),
-                        "Steady state: over the last Steady-state window of "
-                        "sliding, Fn (or delta), Ft and L_hat each vary by "
-                        "less than this, relative to their magnitude (Ft: "
-                        "to max(|Ft|, 1e-3 |Fn|)).");
+      prm.declare_entry(
+        "Steady-state tolerance",
+        "1e-3",
+        Patterns::Double(),
+        "Steady state: the means of Fn (or delta under force control), Ft "
+        "and L_hat over the two halves of the last Steady-state window of "
+        "sliding differ by less than this, relative to their magnitude (Ft: "
+        "to max(|Ft|, 1e-3 |Fn|)). The steady values in steady_state.csv "
+        "are the means over that window: with adhesion the contact edges "
+        "jump from node to node and Ft flickers about its mean.");
       prm.declare_entry("Steady-state window",
                         "0",
                         Patterns::Double(),
                         "Sliding distance (eps) over which steady state is "
-                        "judged. 0: automatic, max(L, 2 min(V tau_c, 4 L)).");
+                        "judged and its values averaged. 0: automatic, "
+                        "max(L, 2 min(V tau_c, 4 L)).");
       prm.declare_entry(
         "Solver",
         "transient",
@@ -513,6 +527,18 @@ namespace viscoslide
                         "space (doc/steady_state.md); 1 agrees with 2 to "
                         "0.03 % in mu in the Hunter test at a fifth of the "
                         "cost.");
+      prm.declare_entry(
+        "Load path",
+        "",
+        Patterns::List(Patterns::Anything(), 0),
+        "Steady-state solver: after the last listed speed, follow the "
+        "steady state at that speed through these loads, in the order "
+        "given, by continuation (each from the solution of the one before, "
+        "in steps halved where Newton fails): F_hat values under force "
+        "control, delta_hat values under displacement control. One row per "
+        "load in steady_state.csv, after the speeds' rows. Follows a "
+        "branch, e.g. a sliding contact unloaded towards pull-off. Empty: "
+        "none.");
       prm.leave_subsection();
     }
 
@@ -539,7 +565,22 @@ namespace viscoslide
       solver                = prm.get("Solver");
       continuation_factor   = prm.get_double("Continuation factor");
       viscous_strain_degree = prm.get_integer("Viscous strain degree");
+      load_path.clear();
+      for (const auto &w : Utilities::split_string_list(prm.get("Load path")))
+        {
+          const double value = to_number(w);
+          require(std::isfinite(value),
+                  "'Sliding/Load path' = " + prm.get("Load path") + ": '" + w +
+                    "' is not a finite number");
+          load_path.push_back(value);
+        }
       prm.leave_subsection();
+      require(load_path.empty() || solver == "steady-state",
+              "'Sliding/Load path' needs 'Sliding/Solver' = steady-state "
+              "(the transient solver holds the load of the approach)");
+      require(load_path.empty() || speed > 0,
+              "'Sliding/Load path' needs a positive 'Sliding/Sliding "
+              "speed' to follow the loads at");
       require(continuation_factor > 1 && std::isfinite(continuation_factor),
               entry("Sliding", "Continuation factor", continuation_factor) +
                 " must be larger than 1");

@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace viscoslide
 {
@@ -833,6 +834,71 @@ namespace viscoslide
   }
 
 
+  namespace
+  {
+    std::string
+    label(const std::string &name, const double value)
+    {
+      std::ostringstream os;
+      os << name << " = " << value;
+      return os.str();
+    }
+  } // namespace
+
+
+  // Solves the steady state after the speed or the load moved, from the
+  // last converged state: Newton, else pseudo-transient relaxation (a
+  // contact edge may have to jump: always at the first speed, where the
+  // trailing edge leaves the approach branch), then the mesh adaptation
+  // cycles. Returns the Newton iterations, or -1; the caller restores the
+  // state it started from.
+  int
+  SteadyStateSolver::solve_step(const std::string &what)
+  {
+    const TrilinosWrappers::MPI::Vector backup(solution);
+    const double                        delta0 = delta;
+    int                                 its    = solve_newton();
+    if (its < 0)
+      {
+        solution = backup;
+        delta    = delta0;
+        its      = relax_to_equilibrium();
+        if (its < 0)
+          return -1;
+        pcout << "  steady " << what << ": reached by relaxation" << std::endl;
+      }
+    for (unsigned int cycle = 0; cycle < prm.mesh.max_adaptation_cycles;
+         ++cycle)
+      {
+        if (!adapt_mesh())
+          break;
+        int more = solve_newton();
+        if (more < 0)
+          more = relax_to_equilibrium();
+        if (more < 0)
+          {
+            pcout << "Steady state: Newton failed at " << what
+                  << " after adapting the mesh" << std::endl;
+            return -1;
+          }
+        its += more;
+      }
+    last_newton_iterations = its;
+    update_quantities();
+    pcout << "  steady V_hat " << std::setw(11) << V_hat << "  delta_hat "
+          << std::setw(10) << delta / scales.eps << "  F_hat " << std::setw(11)
+          << last_quantities.normal_force / scales.force << "  mu "
+          << std::setw(11)
+          << std::abs(last_quantities.tangential_force /
+                      last_quantities.normal_force)
+          << "  L_hat " << std::setw(11)
+          << last_quantities.contact_length / scales.R << "  Newton " << its
+          << "  dofs " << dof_handler.n_dofs() << "  factorizations "
+          << factorizations << "  GMRES " << krylov_iterations << std::endl;
+    return its;
+  }
+
+
   bool
   SteadyStateSolver::continue_to(const double                 target,
                                  const std::function<void()> &on_converged)
@@ -854,21 +920,8 @@ namespace viscoslide
 
         const TrilinosWrappers::MPI::Vector backup(solution);
         const double                        delta0 = delta, V0 = V_hat;
-        V_hat   = next;
-        int its = solve_newton();
-        if (its < 0)
-          {
-            // A contact edge may have to jump to reach the new speed's
-            // state (always at the first speed, where the trailing edge
-            // leaves the approach branch): relax from the last state.
-            solution = backup;
-            delta    = delta0;
-            its      = relax_to_equilibrium();
-            if (its >= 0)
-              pcout << "  steady V_hat " << V_hat << ": reached by relaxation"
-                    << std::endl;
-          }
-        if (its < 0)
+        V_hat = next;
+        if (solve_step(label("V_hat", next)) < 0)
           {
             solution = backup;
             delta    = delta0;
@@ -885,36 +938,52 @@ namespace viscoslide
               }
             continue;
           }
-        for (unsigned int cycle = 0; cycle < prm.mesh.max_adaptation_cycles;
-             ++cycle)
-          {
-            if (!adapt_mesh())
-              break;
-            int more = solve_newton();
-            if (more < 0)
-              more = relax_to_equilibrium();
-            if (more < 0)
-              {
-                pcout << "Steady state: Newton failed at V_hat = " << V_hat
-                      << " after adapting the mesh" << std::endl;
-                return false;
-              }
-            its += more;
-          }
-        last_newton_iterations = its;
-        update_quantities();
-        pcout << "  steady V_hat " << std::setw(11) << V_hat << "  delta_hat "
-              << std::setw(10) << delta / scales.eps << "  F_hat "
-              << std::setw(11) << last_quantities.normal_force / scales.force
-              << "  mu " << std::setw(11)
-              << std::abs(last_quantities.tangential_force /
-                          last_quantities.normal_force)
-              << "  L_hat " << std::setw(11)
-              << last_quantities.contact_length / scales.R << "  Newton " << its
-              << "  dofs " << dof_handler.n_dofs() << "  factorizations "
-              << factorizations << "  GMRES " << krylov_iterations << std::endl;
         on_converged();
         step = std::min(largest_step, 2. * step);
+      }
+    return true;
+  }
+
+
+  // Continuation in the controlled quantity at the current speed: F_n under
+  // force control, delta under displacement control. Steps are linear (the
+  // load may change sign): the whole way first, halved on failure down to
+  // a thousandth of it, doubled again after each success.
+  bool
+  SteadyStateSolver::continue_to_load(const double                 target,
+                                      const std::function<void()> &on_converged)
+  {
+    double      &controlled = force_control ? target_force : delta;
+    const double unit       = force_control ? scales.force : scales.eps;
+    const double start = controlled, whole = std::abs(target - start);
+    double       step = whole;
+    while (controlled != target)
+      {
+        const double                        next = target > controlled
+                                                     ? std::min(target, controlled + step)
+                                                     : std::max(target, controlled - step);
+        const TrilinosWrappers::MPI::Vector backup(solution);
+        const double delta0 = delta, force0 = target_force;
+        controlled = next;
+        const std::string what =
+          label(force_control ? "F_hat" : "delta_hat", next / unit);
+        if (solve_step(what) < 0)
+          {
+            solution     = backup;
+            delta        = delta0;
+            target_force = force0;
+            step *= 0.5;
+            if (step < 1e-3 * whole)
+              {
+                pcout << "Steady state: Newton failed at " << what
+                      << " even in steps of a thousandth of the way from "
+                      << start / unit << std::endl;
+                return false;
+              }
+            continue;
+          }
+        on_converged();
+        step = std::min(whole, 2. * step);
       }
     return true;
   }

@@ -60,8 +60,14 @@ namespace viscoslide
                    const Progress                  *progress = nullptr);
 
     // Approach, optional hold, optional retraction; writes all outputs.
+    // With `resume`, continues the transient sliding phase from the
+    // checkpoint in the output directory instead (doc/restart.md).
     void
-    run();
+    run(bool resume = false);
+
+    // Whether `directory` holds a complete checkpoint of a sliding run.
+    static bool
+    has_checkpoint(const std::string &directory);
 
     // The columns of steady_state.csv, so that the sweep driver can write
     // a row for a case that failed before writing its own.
@@ -207,7 +213,7 @@ namespace viscoslide
 
     // Sliding phase, by time stepping or by the steady-state solver.
     void
-    slide();
+    slide(bool resumed = false);
     void
     slide_steady();
     // steady_state.csv: a row for the sliding case (for each listed speed
@@ -237,6 +243,42 @@ namespace viscoslide
     // Sliding distance of the transient run so far and its maximum, for
     // the progress report.
     double slid = 0., slide_distance = 0.;
+
+    // The transient sliding phase: where it started, the contact length
+    // after the approach, how far it may go and over which window steady
+    // state is judged; the samples of Fn (or delta), Ft and L so far, and
+    // the rows of history.csv. All of it is in a checkpoint.
+    struct SlidePlan
+    {
+      double s0 = 0., L0 = 0., distance = 0., window = 0.;
+    } slide_plan;
+    struct SlideSample
+    {
+      enum
+      {
+        delta,
+        normal_force,
+        tangential_force,
+        profile_force,
+        contact_length,
+        dissipation_rate,
+        n_values
+      };
+      double s = 0., value[n_values] = {};
+    };
+    std::vector<SlideSample> samples;
+    unsigned int             history_rows = 0, approach_rows = 0;
+
+    // Checkpoint and restart (doc/restart.md): the mesh with solution,
+    // history and predictor attached (p4est serialization), and the
+    // scalars of the sliding phase in a text file; written into
+    // checkpoint.tmp/ and then renamed to checkpoint/.
+    void
+    write_checkpoint();
+    void
+    read_checkpoint();
+    std::array<TrilinosWrappers::MPI::Vector, n_history_components>
+    ghosted_history() const;
 
     unsigned int step_number;
     unsigned int last_newton_iterations;

@@ -16,6 +16,9 @@ namespace viscoslide
     // Replace the results of an earlier run (a single run), or rerun every
     // case of a sweep, even one run with other parameters.
     bool overwrite = false;
+    // Continue a killed run, or the unfinished cases of a sweep, from the
+    // checkpoint in its folder (parameters must be unchanged).
+    bool resume = false;
     // Which finished cases of a sweep run again: "none", "failed", "all".
     std::string redo = "none";
     // Check the file and list the cases (folder and checksum of their

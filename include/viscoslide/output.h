@@ -29,6 +29,13 @@ namespace viscoslide
              const std::string              &comment,
              MPI_Comm                        comm);
 
+    // Reopens a table written by the constructor above, keeping its first
+    // `keep_rows` rows (those of a checkpoint) and appending after them.
+    CsvTable(const std::string              &filename,
+             const std::vector<std::string> &columns,
+             std::size_t                     keep_rows,
+             MPI_Comm                        comm);
+
     // Numbers are written with 12 significant digits.
     void
     add_row(const std::vector<std::string> &values);
@@ -66,6 +73,11 @@ namespace viscoslide
                unsigned int       counter,
                double             time);
 
+    // A resumed run: takes the entries of an existing NAME.pvd written
+    // before step `before` back into the collection it extends.
+    void
+    resume_collection(const std::string &name, unsigned int before);
+
   private:
     std::string directory;
     MPI_Comm    comm;
@@ -101,6 +113,11 @@ namespace viscoslide
     std::chrono::steady_clock::time_point start;
   };
 
+
+  // Writes `text` to `path` through a temporary file and a rename, so
+  // that a killed run leaves the old or the new file, never half of one.
+  void
+  write_atomically(const std::string &path, const std::string &text);
 
   // The text that identifies the program version in every output.
   std::string

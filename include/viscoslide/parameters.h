@@ -25,6 +25,7 @@ namespace viscoslide
       std::string  verbosity; // "quiet", "normal" or "verbose"
       unsigned int fields_every;
       unsigned int profile_every;
+      unsigned int checkpoint_every; // sliding steps; 0: none
       bool         write_fields;
 
       static void
@@ -133,6 +134,9 @@ namespace viscoslide
       std::string         solver; // "transient" or "steady-state"
       double              continuation_factor;
       int                 viscous_strain_degree;
+      // F_hat (force control) or delta_hat (displacement control) values
+      // followed at the last speed by the steady-state solver.
+      std::vector<double> load_path;
 
       static void
       declare(ParameterHandler &prm);

@@ -83,6 +83,14 @@ namespace viscoslide
       double                       V_hat,
       const std::function<void()> &on_converged = [] {});
 
+    // Follows the steady state at the current speed to a new load: F_n
+    // under force control, delta under displacement control (SI units),
+    // by continuation in steps; false if a step cannot be solved.
+    bool
+    continue_to_load(
+      double                       target,
+      const std::function<void()> &on_converged = [] {});
+
     double
     speed() const
     {
@@ -142,6 +150,8 @@ namespace viscoslide
     // V_hat (relax()); the pseudo-steps used or -1.
     int
     relax_to_equilibrium();
+    int
+    solve_step(const std::string &what);
     bool
     adapt_mesh();
     void

@@ -182,7 +182,9 @@ namespace viscoslide
                     parameters.adhesion.contact_gap,
                     parameters.adhesion.face_quadrature_points,
                     top_boundary)
-    , writer(parameters.output.directory, mpi_communicator)
+    , writer(parameters.output.directory,
+             mpi_communicator,
+             parameters.output.field_format)
     , progress(progress)
     , step_number(0)
     , last_newton_iterations(0)
@@ -426,9 +428,12 @@ namespace viscoslide
     if (force_control)
       {
         delta_coupling.compress(VectorOperation::add);
-        force_mismatch =
-          Utilities::MPI::sum(force, mpi_communicator) - target_force;
-        delta_stiffness = Utilities::MPI::sum(delta_stiff, mpi_communicator);
+        // Under spring control the force to hold follows delta.
+        force_mismatch = Utilities::MPI::sum(force, mpi_communicator) -
+                         target_force -
+                         spring_stiffness * (spring_delta - current.delta);
+        delta_stiffness =
+          Utilities::MPI::sum(delta_stiff, mpi_communicator) + spring_stiffness;
       }
   }
 
@@ -865,9 +870,10 @@ namespace viscoslide
             << "\ncommitted " << committed.delta << " " << committed.s << " "
             << committed.time << " " << committed.dt << "\nlast_increment "
             << last_increment_delta << " " << last_increment_s
-            << "\ntarget_force " << target_force << "\nplan " << slide_plan.s0
-            << " " << slide_plan.L0 << " " << slide_plan.distance << " "
-            << slide_plan.window << "\nsamples " << samples.size() << "\n";
+            << "\ntarget_force " << target_force << " " << spring_delta
+            << "\nplan " << slide_plan.s0 << " " << slide_plan.L0 << " "
+            << slide_plan.distance << " " << slide_plan.window << "\nsamples "
+            << samples.size() << "\n";
         for (const auto &x : samples)
           {
             out << x.s;
@@ -936,6 +942,7 @@ namespace viscoslide
     last_increment_delta = next("last_increment");
     last_increment_s     = next(nullptr);
     target_force         = next("target_force");
+    spring_delta         = next(nullptr);
     slide_plan.s0        = next("plan");
     slide_plan.L0        = next(nullptr);
     slide_plan.distance  = next(nullptr);
@@ -1135,17 +1142,17 @@ namespace viscoslide
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.add_data_vector(level, "level");
     data_out.build_patches(2);
-    writer.write_pvtu(data_out, "solution", step_number, committed.time);
+    writer.write(data_out, "solution", step_number, committed.time);
 
     SurfaceFields     surface_fields(*law, *indenter, scales, committed);
     TopSurfaceDataOut surface_out;
     surface_out.attach_dof_handler(dof_handler);
     surface_out.add_data_vector(solution, surface_fields);
     surface_out.build_patches(2);
-    writer.write_pvtu(static_cast<const DataOutFaces<dim> &>(surface_out),
-                      "surface",
-                      step_number,
-                      committed.time);
+    writer.write(static_cast<const DataOutFaces<dim> &>(surface_out),
+                 "surface",
+                 step_number,
+                 committed.time);
   }
 
 
@@ -1276,6 +1283,7 @@ namespace viscoslide
             std::to_string(2 * (plan.s0 + plan.distance + 2 * plan.L0)) +
             " (or set 'Sliding/Maximum sliding distance')");
         target_force = last_quantities.normal_force;
+        spring_delta = committed.delta;
         samples.clear();
         history_rows  = 0;
         history_table = std::make_unique<CsvTable>(writer.path("history.csv"),
@@ -1289,11 +1297,15 @@ namespace viscoslide
                                                  history_rows,
                                                  mpi_communicator);
     const auto &plan = slide_plan;
-    force_control    = prm.sliding.control == "force";
-    const double ds  = prm.sliding.increment * h_min;
-    const double dt  = ds / V;
-    slide_distance   = plan.distance;
-    slid             = committed.s - plan.s0;
+    force_control    = prm.sliding.control != "displacement";
+    spring_stiffness =
+      prm.sliding.control == "spring"
+        ? prm.sliding.spring_stiffness * scales.force / scales.eps
+        : 0.;
+    const double ds = prm.sliding.increment * h_min;
+    const double dt = ds / V;
+    slide_distance  = plan.distance;
+    slid            = committed.s - plan.s0;
     pcout << (resumed ? "Resuming sliding" : "Sliding")
           << " at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control: up to " << plan.distance
@@ -1349,6 +1361,24 @@ namespace viscoslide
       return true;
     };
 
+    // The steady values are the means over the last window (over all of
+    // the sliding if it was shorter).
+    auto report = [&](const bool steady) {
+      const Sample mean   = in_window(committed.s - plan.window, committed.s);
+      SurfaceQuantities q = last_quantities;
+      q.normal_force      = mean.value[Sample::normal_force];
+      q.tangential_force  = mean.value[Sample::tangential_force];
+      q.profile_force     = mean.value[Sample::profile_force];
+      q.contact_length    = mean.value[Sample::contact_length];
+      write_steady_state(prm.sliding.speed,
+                         mean.value[Sample::delta],
+                         q,
+                         mean.value[Sample::dissipation_rate],
+                         steady,
+                         committed.s - plan.s0,
+                         "transient");
+    };
+
     bool         steady           = false;
     unsigned int checkpointed_row = history_rows;
     while (committed.s - plan.s0 < plan.distance - 1e-9 * ds && !steady)
@@ -1359,7 +1389,13 @@ namespace viscoslide
         target.dt = dt;
         slid      = target.s - plan.s0;
         if (!advance_to(target, "slide"))
-          abort_run(target);
+          {
+            // The case ends with the last converged state as its row,
+            // flagged not steady; the reason is the exception's.
+            if (!samples.empty())
+              report(false);
+            abort_run(target);
+          }
         const auto &q = last_quantities;
         samples.push_back({committed.s,
                            {committed.delta,
@@ -1377,25 +1413,12 @@ namespace viscoslide
           }
       }
 
-    // The steady values are the means over the last window (over all of
-    // the sliding if it was shorter).
-    const Sample      mean = in_window(committed.s - plan.window, committed.s);
-    SurfaceQuantities q    = last_quantities;
-    q.normal_force         = mean.value[Sample::normal_force];
-    q.tangential_force     = mean.value[Sample::tangential_force];
-    q.profile_force        = mean.value[Sample::profile_force];
-    q.contact_length       = mean.value[Sample::contact_length];
-    write_steady_state(prm.sliding.speed,
-                       mean.value[Sample::delta],
-                       q,
-                       mean.value[Sample::dissipation_rate],
-                       steady,
-                       committed.s - plan.s0,
-                       "transient");
+    report(steady);
     write_profile("surface_profile_steady.csv");
     pcout << (steady ? "Steady state" : "NO steady state") << " after "
           << committed.s - plan.s0 << " eps" << std::endl;
-    force_control = false;
+    force_control    = false;
+    spring_stiffness = 0.;
   }
 
 
@@ -1415,8 +1438,12 @@ namespace viscoslide
                              triangulation,
                              timer);
     steady.initialize(dof_handler, solution, committed.delta, committed.s);
-    if (prm.sliding.control == "force")
-      steady.hold_force(last_quantities.normal_force);
+    if (prm.sliding.control != "displacement")
+      steady.hold_force(last_quantities.normal_force,
+                        prm.sliding.control == "spring"
+                          ? prm.sliding.spring_stiffness * scales.force /
+                              scales.eps
+                          : 0.);
     pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control, by continuation from the "
           << "relaxed state" << std::endl;
@@ -1463,7 +1490,7 @@ namespace viscoslide
     // from there to the next one.
     const auto  &speeds  = prm.sliding.speeds;
     const auto  &loads   = prm.sliding.load_path;
-    const bool   force   = prm.sliding.control == "force";
+    const bool   force   = prm.sliding.control != "displacement";
     const double unit    = force ? scales.force : scales.eps;
     const auto   n_total = speeds.size() + loads.size();
     std::string  failed;

@@ -104,6 +104,9 @@ namespace viscoslide
       add(sw.controls, "", [](const std::string &v) {
         return std::vector<Setting>{{"Sliding", "Control", v}};
       });
+      add(words(sw.spring_stiffnesses), "k", [](const std::string &v) {
+        return std::vector<Setting>{{"Sliding", "Spring stiffness", v}};
+      });
       if (p.sliding.solver == "transient" && p.sliding.speeds.size() > 1)
         add(words(p.sliding.speeds), "V", [](const std::string &v) {
           return std::vector<Setting>{{"Sliding", "Sliding speed", v}};
@@ -270,13 +273,24 @@ namespace viscoslide
     void
     write_provenance(const Case &c, MPI_Comm comm)
     {
-      if (Utilities::MPI::this_mpi_process(comm) != 0)
-        return;
-      const fs::path dir(c.parameters.output.directory);
-      std::ofstream(dir / "parameters.prm") << "# " << version_string() << "\n"
-                                            << c.parameter_text;
-      std::ofstream(dir / "parameters.json") << c.parameter_json;
-      std::ofstream(dir / "version.txt") << version_string() << "\n";
+      std::string error;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        try
+          {
+            const fs::path dir(c.parameters.output.directory);
+            write_atomically(dir / "parameters.prm",
+                             "# " + version_string() + "\n" + c.parameter_text);
+            write_atomically(dir / "parameters.json", c.parameter_json);
+            write_atomically(dir / "version.txt", version_string() + "\n");
+          }
+        catch (std::exception &e)
+          {
+            error = e.what();
+          }
+      // every process leaves together
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw std::runtime_error(error);
     }
 
     // Runs one case; returns "" or the reason it failed. Failures of the
@@ -406,6 +420,18 @@ namespace viscoslide
                     << " MPI process(es)\n";
         const Progress    progress(1, 1);
         const std::string failure = run_case(c, progress, comm, resume);
+        if (root)
+          try
+            {
+              write_atomically(dir / "status",
+                               failure.empty()
+                                 ? std::string("done\n\n")
+                                 : "failed\n" + one_line(failure) + "\n");
+            }
+          catch (std::exception &e)
+            {
+              std::cerr << "viscoslide: " << e.what() << std::endl;
+            }
         if (!failure.empty() && root)
           std::cerr << "\nviscoslide: run failed:\n" << failure << std::endl;
         return failure.empty() ? 0 : 2;

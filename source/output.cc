@@ -104,9 +104,12 @@ namespace viscoslide
   }
 
 
-  OutputWriter::OutputWriter(const std::string &directory, MPI_Comm comm)
+  OutputWriter::OutputWriter(const std::string &directory,
+                             MPI_Comm           comm,
+                             const std::string &format)
     : directory(directory)
     , comm(comm)
+    , format(format)
   {
   }
 
@@ -151,51 +154,114 @@ namespace viscoslide
 
   template <typename DataOutType>
   void
-  OutputWriter::write_pvtu(const DataOutType &data_out,
-                           const std::string &name,
-                           const unsigned int counter,
-                           const double       time)
+  OutputWriter::write(const DataOutType &data_out,
+                      const std::string &name,
+                      const unsigned int counter,
+                      const double       time)
   {
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      directory + "/", name, counter, comm, 5, 0);
-    auto &records = pvd_records[name];
-    records.emplace_back(time, pvtu);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    const std::string  step = name + "_" + Utilities::int_to_string(counter, 5);
+    auto              &entries = records[name];
+    std::ostringstream collection;
+    try
       {
-        std::ostringstream pvd;
-        DataOutBase::write_pvd_record(pvd, records);
-        write_atomically(path(name + ".pvd"), pvd.str());
+        if (format == "vtu")
+          {
+            entries.emplace_back(time,
+                                 data_out.write_vtu_with_pvtu_record(
+                                   directory + "/", name, counter, comm, 5, 0));
+            DataOutBase::write_pvd_record(collection, entries);
+          }
+        else
+          {
+            // One file per step, so that a step is complete once written
+            // and a resumed run can continue the collection.
+            DataOutBase::DataOutFilter filter(
+              DataOutBase::DataOutFilterFlags(true, true));
+            data_out.write_filtered_data(filter);
+            data_out.write_hdf5_parallel(filter, path(step + ".h5"), comm);
+            entries.emplace_back(
+              counter,
+              data_out.create_xdmf_entry(filter, step + ".h5", time, comm)
+                .get_xdmf_content(3));
+            collection << "<?xml version=\"1.0\" ?>\n"
+                       << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                       << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
+                       << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+                          "CollectionType=\"Temporal\">\n";
+            for (const auto &e : entries)
+              collection << e.second;
+            collection << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+          }
       }
+    catch (ExceptionBase &e)
+      {
+        // A field file that could not be written completely (full disk) is
+        // removed, so that no truncated file is left behind.
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        for (const auto &f : fs::directory_iterator(directory, ec))
+          if (f.path().filename().string().rfind(step + ".", 0) == 0)
+            fs::remove(f.path(), ec);
+        throw std::runtime_error("cannot write the fields '" + step +
+                                 ".*' into '" + directory + "' (" +
+                                 e.get_exc_name() +
+                                 ": disk full?); the files written before "
+                                 "are complete");
+      }
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_atomically(path(name + (format == "vtu" ? ".pvd" : ".xdmf")),
+                       collection.str());
   }
+  template void
+  OutputWriter::write(const DataOut<2> &,
+                      const std::string &,
+                      unsigned int,
+                      double);
+  template void
+  OutputWriter::write(const DataOutFaces<2> &,
+                      const std::string &,
+                      unsigned int,
+                      double);
 
 
   void
   OutputWriter::resume_collection(const std::string &name,
                                   const unsigned int before)
   {
-    auto &records = pvd_records[name];
-    records.clear();
-    std::ifstream    in(path(name + ".pvd"));
-    const std::regex dataset("timestep=\"([^\"]*)\".*file=\"(" + name +
-                             "_([0-9]+)\\.pvtu)\"");
-    std::string      line;
-    std::smatch      m;
-    while (std::getline(in, line))
-      if (std::regex_search(line, m, dataset) &&
-          std::stoul(m[3].str()) < before)
-        records.emplace_back(std::stod(m[1].str()), m[2].str());
+    auto &entries = records[name];
+    entries.clear();
+    std::ifstream     in(path(name + (format == "vtu" ? ".pvd" : ".xdmf")));
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string all = text.str();
+    std::smatch       m;
+    if (format == "vtu")
+      {
+        const std::regex dataset("timestep=\"([^\"]*)\"[^\n]*file=\"(" + name +
+                                 "_([0-9]+)\\.pvtu)\"");
+        for (auto it = std::sregex_iterator(all.begin(), all.end(), dataset);
+             it != std::sregex_iterator();
+             ++it)
+          if (std::stoul((*it)[3].str()) < before)
+            entries.emplace_back(std::stod((*it)[1].str()), (*it)[2].str());
+      }
+    else
+      {
+        // The <Grid> elements of the steps, each naming its .h5 file.
+        const std::regex grid("( *<Grid Name=\"mesh\"[\\s\\S]*?</Grid>\n)");
+        const std::regex file(name + "_([0-9]+)\\.h5");
+        for (auto it = std::sregex_iterator(all.begin(), all.end(), grid);
+             it != std::sregex_iterator();
+             ++it)
+          {
+            const std::string element = (*it)[1].str();
+            if (std::regex_search(element, m, file) &&
+                std::stoul(m[1].str()) < before)
+              entries.emplace_back(std::stoul(m[1].str()), element);
+          }
+      }
   }
 
-  template void
-  OutputWriter::write_pvtu(const DataOut<2> &,
-                           const std::string &,
-                           unsigned int,
-                           double);
-  template void
-  OutputWriter::write_pvtu(const DataOutFaces<2> &,
-                           const std::string &,
-                           unsigned int,
-                           double);
 
 
   Progress::Progress(const unsigned int n_cases, const unsigned int n_to_run)
@@ -258,7 +324,11 @@ namespace viscoslide
       out << text;
       out.flush();
       if (!out)
-        throw std::runtime_error("cannot write '" + tmp + "' (disk full?)");
+        {
+          out.close();
+          std::remove(tmp.c_str());
+          throw std::runtime_error("cannot write '" + tmp + "' (disk full?)");
+        }
     }
     std::filesystem::rename(tmp, path);
   }

@@ -76,6 +76,14 @@ namespace viscoslide
                         "true",
                         Patterns::Bool(),
                         "Write VTU/PVTU volume and surface fields.");
+      prm.declare_entry(
+        "Field format",
+        "vtu",
+        Patterns::Selection("vtu|hdf5"),
+        "'vtu': per step one .vtu per process and a .pvtu, listed in NAME.pvd "
+        "(ParaView, VisIt). 'hdf5': per step one NAME_NNNNN.h5 written "
+        "by all processes together (MPI-IO), listed in NAME.xdmf (ParaView, "
+        "VisIt); fewer files for large runs on many processes.");
       prm.declare_entry("Fields every",
                         "10",
                         Patterns::Integer(0),
@@ -107,6 +115,7 @@ namespace viscoslide
       verbosity        = prm.get("Verbosity");
       write_fields     = prm.get_bool("Write fields");
       fields_every     = prm.get_integer("Fields every");
+      field_format     = prm.get("Field format");
       profile_every    = prm.get_integer("Surface profile every");
       checkpoint_every = prm.get_integer("Checkpoint every");
       prm.leave_subsection();
@@ -462,13 +471,26 @@ namespace viscoslide
         "solution of the one before), the transient solver runs each as a "
         "case of its own; either way one row per speed in "
         "steady_state.csv.");
-      prm.declare_entry("Control",
-                        "displacement",
-                        Patterns::Selection("displacement|force"),
-                        "'displacement': delta stays at its value after the "
-                        "approach and Fn is an output. 'force': Fn stays at "
-                        "the value reached at the end of the approach and "
-                        "delta is an unknown solved with the displacements.");
+      prm.declare_entry(
+        "Control",
+        "displacement",
+        Patterns::Selection("displacement|force|spring"),
+        "'displacement': delta stays at its value after the approach and Fn "
+        "is an output. 'force': Fn stays at the value reached at the end of "
+        "the approach and delta is an unknown solved with the displacements. "
+        "'spring': the indenter hangs on a vertical spring of stiffness "
+        "Spring stiffness whose far end stays where it was at the end of "
+        "the approach, so Fn = F0 + k (delta0 - delta) with F0, delta0 "
+        "those of the approach; between force control (k -> 0) and "
+        "displacement control (k -> infinity), like a real tribometer.");
+      prm.declare_entry(
+        "Spring stiffness",
+        "1",
+        Patterns::Double(),
+        "Control = spring: k_hat = dF_hat/d delta_hat, the spring's force "
+        "(per unit length, in (pi dgamma^2 E0* R)^(1/3)) per eps of "
+        "approach. For scale: the contact's own stiffness dF_hat/d "
+        "delta_hat is about 0.35 at muT = 1, R_hat = 1e4, F_hat = 1.");
       prm.declare_entry("Sliding increment",
                         "1",
                         Patterns::Double(),
@@ -558,6 +580,7 @@ namespace viscoslide
         }
       speed                 = speeds.back();
       control               = prm.get("Control");
+      spring_stiffness      = prm.get_double("Spring stiffness");
       increment             = prm.get_double("Sliding increment");
       max_distance          = prm.get_double("Maximum sliding distance");
       steady_tolerance      = prm.get_double("Steady-state tolerance");
@@ -591,6 +614,9 @@ namespace viscoslide
                 *std::min_element(speeds.begin(), speeds.end()) > 0,
               "'Sliding/Sliding speed' = " + speed_list +
                 ": a list of speeds must hold positive speeds only");
+      require(spring_stiffness > 0 && std::isfinite(spring_stiffness),
+              entry("Sliding", "Spring stiffness", spring_stiffness) +
+                " must be positive");
       require(increment > 0,
               entry("Sliding", "Sliding increment", increment) +
                 " must be positive");
@@ -695,9 +721,15 @@ namespace viscoslide
       prm.declare_entry(
         "Controls",
         "",
-        Patterns::List(Patterns::Selection("displacement|force"), 0),
-        "Comma-separated 'displacement' and/or 'force'; "
+        Patterns::List(Patterns::Selection("displacement|force|spring"), 0),
+        "Comma-separated 'displacement', 'force' and/or 'spring'; "
         "each replaces Sliding/Control.");
+      prm.declare_entry("Spring stiffnesses",
+                        "",
+                        list,
+                        "Comma-separated k_hat values; each replaces "
+                        "Sliding/Spring stiffness (used where Control is "
+                        "spring).");
       prm.leave_subsection();
     }
 
@@ -729,9 +761,10 @@ namespace viscoslide
       tabor_parameters = numbers("Tabor parameters", true);
       thicknesses.clear();
       numbers("Layer thicknesses", true, &thicknesses);
-      approaches = numbers("Approaches", false);
-      loads      = numbers("Loads", false);
-      controls   = Utilities::split_string_list(prm.get("Controls"));
+      approaches         = numbers("Approaches", false);
+      loads              = numbers("Loads", false);
+      controls           = Utilities::split_string_list(prm.get("Controls"));
+      spring_stiffnesses = numbers("Spring stiffnesses", true);
       prm.leave_subsection();
       require(approaches.empty() || loads.empty(),
               "'Sweep/Approaches' and 'Sweep/Loads' are both given: a "

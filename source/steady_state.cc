@@ -341,10 +341,12 @@ namespace viscoslide
 
 
   void
-  SteadyStateSolver::hold_force(const double normal_force)
+  SteadyStateSolver::hold_force(const double normal_force, const double spring)
   {
-    force_control = true;
-    target_force  = normal_force;
+    force_control    = true;
+    target_force     = normal_force;
+    spring_stiffness = spring;
+    spring_delta     = delta;
   }
 
 
@@ -658,10 +660,13 @@ namespace viscoslide
     if (force_control)
       {
         delta_coupling.compress(VectorOperation::add);
-        force_mismatch =
-          dealii::Utilities::MPI::sum(force, mpi_communicator) - target_force;
+        // Under spring control the force to hold follows delta.
+        force_mismatch = dealii::Utilities::MPI::sum(force, mpi_communicator) -
+                         target_force -
+                         spring_stiffness * (spring_delta - delta);
         delta_stiffness =
-          dealii::Utilities::MPI::sum(delta_stiff, mpi_communicator);
+          dealii::Utilities::MPI::sum(delta_stiff, mpi_communicator) +
+          spring_stiffness;
       }
   }
 
@@ -1066,6 +1071,6 @@ namespace viscoslide
                              interpretation);
     data_out.add_data_vector(solution, fields);
     data_out.build_patches(2);
-    writer.write_pvtu(data_out, "steady", counter, V_hat);
+    writer.write(data_out, "steady", counter, V_hat);
   }
 } // namespace viscoslide

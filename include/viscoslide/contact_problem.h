@@ -201,8 +201,12 @@ namespace viscoslide
     // extra equation. Assembly then also provides the border of the Newton
     // system, b = dR/d delta = (dFn/du)^T, d = dFn/d delta, and the force
     // mismatch.
-    bool                          force_control = false;
-    double                        target_force  = 0.;
+    // Spring control is force control with a target that follows delta:
+    // target_force + spring_stiffness (spring_delta - delta).
+    bool                          force_control    = false;
+    double                        target_force     = 0.;
+    double                        spring_stiffness = 0.;
+    double                        spring_delta     = 0.;
     TrilinosWrappers::MPI::Vector delta_coupling; // b
     double                        delta_stiffness = 0.;
     double                        force_mismatch  = 0.;

@@ -52,7 +52,11 @@ namespace viscoslide
   class OutputWriter
   {
   public:
-    OutputWriter(const std::string &directory, MPI_Comm comm);
+    // format: "vtu" (one .vtu per process, .pvtu, .pvd) or "hdf5" (one
+    // .h5 per step written by all processes, .xdmf collection).
+    OutputWriter(const std::string &directory,
+                 MPI_Comm           comm,
+                 const std::string &format = "vtu");
 
     // Creates the directory. Refuses (throws) if it already holds the
     // results of a run and overwriting was not asked for.
@@ -64,25 +68,28 @@ namespace viscoslide
     std::string
     path(const std::string &filename) const;
 
-    // Writes DataOut(Faces) patches as NAME-NNNNN.pvtu plus one .vtu per
-    // process and refreshes NAME.pvd.
+    // Writes DataOut(Faces) patches of step `counter` as NAME_NNNNN.pvtu
+    // (+ one .vtu per process) or NAME_NNNNN.h5, and rewrites the
+    // collection NAME.pvd or NAME.xdmf that lists them with their times.
     template <typename DataOutType>
     void
-    write_pvtu(const DataOutType &data_out,
-               const std::string &name,
-               unsigned int       counter,
-               double             time);
+    write(const DataOutType &data_out,
+          const std::string &name,
+          unsigned int       counter,
+          double             time);
 
-    // A resumed run: takes the entries of an existing NAME.pvd written
-    // before step `before` back into the collection it extends.
+    // A resumed run: takes the entries of an existing NAME.pvd (NAME.xdmf)
+    // written before step `before` back into the collection it extends.
     void
     resume_collection(const std::string &name, unsigned int before);
 
   private:
     std::string directory;
     MPI_Comm    comm;
-    std::map<std::string, std::vector<std::pair<double, std::string>>>
-      pvd_records;
+    std::string format;
+    // Per collection: (time, file) of each .pvtu, or (counter, <Grid>
+    // element) of each .h5.
+    std::map<std::string, std::vector<std::pair<double, std::string>>> records;
   };
 
 

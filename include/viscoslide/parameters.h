@@ -27,6 +27,7 @@ namespace viscoslide
       unsigned int profile_every;
       unsigned int checkpoint_every; // sliding steps; 0: none
       bool         write_fields;
+      std::string  field_format; // "vtu" or "hdf5"
 
       static void
       declare(ParameterHandler &prm);
@@ -124,10 +125,11 @@ namespace viscoslide
 
     struct Sliding
     {
-      std::vector<double> speeds;    // V_hat, in the order of continuation
-      double              speed;     // the last of them; 0: no sliding phase
-      std::string         control;   // "displacement" or "force"
-      double              increment; // in finest cells
+      std::vector<double> speeds;  // V_hat, in the order of continuation
+      double              speed;   // the last of them; 0: no sliding phase
+      std::string         control; // "displacement", "force" or "spring"
+      double              spring_stiffness; // k_hat, Control = spring
+      double              increment;        // in finest cells
       double              max_distance;
       double              steady_tolerance;
       double              steady_window;
@@ -169,6 +171,7 @@ namespace viscoslide
       std::vector<double>      approaches;
       std::vector<double>      loads;
       std::vector<std::string> controls;
+      std::vector<double>      spring_stiffnesses;
 
       static void
       declare(ParameterHandler &prm);

@@ -69,9 +69,11 @@ namespace viscoslide
                double                               delta,
                double                               s);
 
-    // Under force control delta is an unknown and Fn is held at this value.
+    // Under force control delta is an unknown and Fn is held at this
+    // value; with a spring (stiffness in N/m per unit length), Fn =
+    // normal_force + spring_stiffness (delta now - delta).
     void
-    hold_force(double normal_force);
+    hold_force(double normal_force, double spring_stiffness = 0.);
 
     // Continues the steady state from its present speed to V_hat in steps
     // no larger than the Continuation factor (shorter where Newton fails),
@@ -200,8 +202,10 @@ namespace viscoslide
     double delta = 0.;
     double s     = 0.;
 
-    bool                          force_control = false;
-    double                        target_force  = 0.;
+    bool                          force_control    = false;
+    double                        target_force     = 0.;
+    double                        spring_stiffness = 0.;
+    double                        spring_delta     = 0.;
     TrilinosWrappers::MPI::Vector delta_coupling;
     double delta_stiffness = 0., force_mismatch = 0., delta_update = 0.,
            traction_scale = 0.;

@@ -22,6 +22,18 @@
 
 namespace viscoslide
 {
+  namespace
+  {
+    // The cell shape of a DataOut's patches (quadrilaterals of the volume,
+    // lines of the surface), for XDMF.
+    template <int patch_dim, int spacedim>
+    ReferenceCell
+    patch_cell(const DataOutInterface<patch_dim, spacedim> &)
+    {
+      return ReferenceCells::get_hypercube<patch_dim>();
+    }
+  } // namespace
+
   CsvTable::CsvTable(const std::string              &filename,
                      const std::vector<std::string> &columns,
                      const std::string              &comment,
@@ -182,7 +194,7 @@ namespace viscoslide
             entries.emplace_back(
               counter,
               data_out.create_xdmf_entry(filter, step + ".h5", time, comm)
-                .get_xdmf_content(3));
+                .get_xdmf_content(3, patch_cell(data_out)));
             collection << "<?xml version=\"1.0\" ?>\n"
                        << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
                        << "<Xdmf Version=\"2.0\">\n  <Domain>\n"

@@ -144,6 +144,16 @@ namespace viscoslide
       return s.size() > 300 ? s.substr(0, 297) + "..." : s;
     }
 
+    // The verdict of a run in its folder: "done", or "failed" and the
+    // reason on the next line.
+    void
+    write_status(const fs::path &dir, const std::string &failure)
+    {
+      write_atomically(dir / "status",
+                       failure.empty() ? std::string("done\n\n")
+                                       : "failed\n" + one_line(failure) + "\n");
+    }
+
     std::string
     read_file(const fs::path &path)
     {
@@ -423,10 +433,7 @@ namespace viscoslide
         if (root)
           try
             {
-              write_atomically(dir / "status",
-                               failure.empty()
-                                 ? std::string("done\n\n")
-                                 : "failed\n" + one_line(failure) + "\n");
+              write_status(dir, failure);
             }
           catch (std::exception &e)
             {
@@ -548,10 +555,7 @@ namespace viscoslide
           {
             try
               {
-                write_atomically(dir / "status",
-                                 failure.empty()
-                                   ? std::string("done\n\n")
-                                   : "failed\n" + one_line(failure) + "\n");
+                write_status(dir, failure);
                 write_sweep_table(top, cases);
               }
             catch (std::exception &e)

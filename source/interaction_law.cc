@@ -1,5 +1,6 @@
 #include <viscoslide/interaction_law.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -66,6 +67,76 @@ namespace viscoslide
            raw_derivative(g1) * (3. * t * t - 4. * t + 1.);
   }
 
+  Exponential::Exponential(const double dgamma, const double eps)
+    : dgamma(dgamma)
+    , eps(eps)
+    , delta(9. * std::sqrt(3.) / (16. * std::exp(1.)) * eps)
+  {
+  }
+
+  double
+  Exponential::traction(const double g) const
+  {
+    const double d0 = -0.5 * eps, d = g - eps;
+    if (d < d0) // linear continuation, as for the Lennard-Jones law
+      return dgamma * d0 / (delta * delta) * std::exp(-d0 / delta) +
+             derivative(g) * (d - d0);
+    return dgamma * d / (delta * delta) * std::exp(-d / delta);
+  }
+
+  double
+  Exponential::derivative(const double g) const
+  {
+    const double d = std::max(g - eps, -0.5 * eps);
+    return dgamma / (delta * delta) * (1. - d / delta) * std::exp(-d / delta);
+  }
+
+
+  namespace
+  {
+    // Smooth step from 0 at t <= 0 to 1 at t >= 1 and its derivative.
+    double
+    step(const double t)
+    {
+      const double x = std::clamp(t, 0., 1.);
+      return x * x * (3. - 2. * x);
+    }
+    double
+    step_derivative(const double t)
+    {
+      return t <= 0. || t >= 1. ? 0. : 6. * t * (1. - t);
+    }
+  } // namespace
+
+  // With the steps centred on eps and eps + h the attraction integrates to
+  // sigma0 h exactly, since each step is antisymmetric about its middle.
+  Dugdale::Dugdale(const double dgamma, const double eps)
+    : wall(dgamma, eps, true)
+    , eps(eps)
+    , sigma0(16. * dgamma / (9. * std::sqrt(3.) * eps))
+    , h(dgamma / sigma0)
+    , w(0.05 * h)
+  {
+  }
+
+  double
+  Dugdale::traction(const double g) const
+  {
+    const double rise = step((g - eps + 0.5 * w) / w),
+                 fall = 1. - step((g - eps - h + 0.5 * w) / w);
+    return wall.traction(g) + sigma0 * rise * fall;
+  }
+
+  double
+  Dugdale::derivative(const double g) const
+  {
+    const double a = (g - eps + 0.5 * w) / w, b = (g - eps - h + 0.5 * w) / w;
+    return wall.derivative(g) +
+           sigma0 * (step_derivative(a) / w * (1. - step(b)) -
+                     step(a) * step_derivative(b) / w);
+  }
+
+
   std::unique_ptr<InteractionLaw>
   create_interaction_law(const std::string &name,
                          const double       dgamma,
@@ -75,6 +146,10 @@ namespace viscoslide
       return std::make_unique<LennardJones>(dgamma, eps);
     if (name == "repulsive")
       return std::make_unique<LennardJones>(dgamma, eps, true);
+    if (name == "exponential")
+      return std::make_unique<Exponential>(dgamma, eps);
+    if (name == "dugdale")
+      return std::make_unique<Dugdale>(dgamma, eps);
     throw std::invalid_argument("Unknown interaction law '" + name + "'");
   }
 } // namespace viscoslide

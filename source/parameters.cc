@@ -177,13 +177,21 @@ namespace viscoslide
       prm.enter_subsection("Adhesion");
       prm.declare_entry("Interaction law",
                         "lennard-jones",
-                        Patterns::Selection("lennard-jones|repulsive"),
-                        "Surface traction-gap law on the top boundary. "
+                        Patterns::Selection(
+                          "lennard-jones|repulsive|exponential|dugdale"),
+                        "Surface traction-gap law on the top boundary, each "
+                        "with work of separation dgamma (doc/model.md). "
                         "'lennard-jones': the 3-9 law of physics.md. "
                         "'repulsive': only its repulsive branch (g < eps), "
                         "rounded to zero slope over [0.98 eps, eps] so that "
                         "Newton converges, i.e. frictionless contact "
-                        "without adhesion.");
+                        "without adhesion. 'exponential': Xu-Needleman's "
+                        "normal law about the gap eps, with the "
+                        "Lennard-Jones peak traction. 'dugdale': "
+                        "Maugis-Dugdale, the Lennard-Jones peak traction "
+                        "constant over the range dgamma/sigma_max beyond "
+                        "the repulsive wall, its ends smoothed over 5 % of "
+                        "the range.");
       prm.declare_entry("Tabor parameter",
                         "6.08",
                         Patterns::Double(),

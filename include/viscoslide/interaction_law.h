@@ -50,8 +50,51 @@ namespace viscoslide
     static constexpr double rounding = 0.02;
   };
 
-  // "lennard-jones" or "repulsive" (the repulsive branch alone, rounded to
-  // C1 over [0.98 eps, eps]).
+  // Xu-Needleman's normal law about the equilibrium gap eps: with d = g -
+  // eps, p = dgamma d/delta^2 exp(-d/delta), whose work of separation from
+  // d = 0 is exactly dgamma. delta = 9 sqrt(3)/(16 e) eps gives the peak
+  // traction dgamma/(e delta) of the Lennard-Jones law, so that muT keeps
+  // its meaning. Repulsion (d < 0) grows exponentially; continued linearly
+  // below d = -eps/2 like the Lennard-Jones law.
+  class Exponential : public InteractionLaw
+  {
+  public:
+    Exponential(double dgamma, double eps);
+
+    double
+    traction(double gap) const override;
+
+    double
+    derivative(double gap) const override;
+
+  private:
+    double dgamma, eps, delta;
+  };
+
+  // Maugis-Dugdale: a constant attraction sigma0 (the Lennard-Jones peak
+  // traction) from the contact up to the range h = dgamma/sigma0, on top of
+  // the rounded repulsive branch of the Lennard-Jones law below eps. Newton
+  // needs a continuous law: the attraction rises over [eps - w, eps] and
+  // falls over [eps + h - w, eps + h] by cubic steps (w = 0.05 h), which
+  // keeps the work of separation from the contact at dgamma.
+  class Dugdale : public InteractionLaw
+  {
+  public:
+    Dugdale(double dgamma, double eps);
+
+    double
+    traction(double gap) const override;
+
+    double
+    derivative(double gap) const override;
+
+  private:
+    LennardJones wall;
+    double       eps, sigma0, h, w;
+  };
+
+  // "lennard-jones", "repulsive" (the repulsive branch alone, rounded to C1
+  // over [0.98 eps, eps]), "exponential" or "dugdale".
   std::unique_ptr<InteractionLaw>
   create_interaction_law(const std::string &name, double dgamma, double eps);
 } // namespace viscoslide

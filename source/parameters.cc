@@ -565,7 +565,8 @@ namespace viscoslide
         "steady state at that speed through these loads, in the order "
         "given, by continuation (each from the solution of the one before, "
         "in steps halved where Newton fails): F_hat values under force "
-        "control, delta_hat values under displacement control. One row per "
+        "control (spring control: the spring's force at the approach's "
+        "delta), delta_hat values under displacement control. One row per "
         "load in steady_state.csv, after the speeds' rows. Follows a "
         "branch, e.g. a sliding contact unloaded towards pull-off. Empty: "
         "none.");

@@ -855,8 +855,9 @@ namespace viscoslide
   // last converged state: Newton, else pseudo-transient relaxation (a
   // contact edge may have to jump: always at the first speed, where the
   // trailing edge leaves the approach branch), then the mesh adaptation
-  // cycles. Returns the Newton iterations, or -1; the caller restores the
-  // state it started from.
+  // cycles. Returns the Newton iterations; -1 if the step failed (the
+  // caller restores the state it started from and shortens the step); -2
+  // if it failed on an adapted mesh, where that state no longer fits.
   int
   SteadyStateSolver::solve_step(const std::string &what)
   {
@@ -884,7 +885,7 @@ namespace viscoslide
           {
             pcout << "Steady state: Newton failed at " << what
                   << " after adapting the mesh" << std::endl;
-            return -1;
+            return -2;
           }
         its += more;
       }
@@ -925,8 +926,11 @@ namespace viscoslide
 
         const TrilinosWrappers::MPI::Vector backup(solution);
         const double                        delta0 = delta, V0 = V_hat;
-        V_hat = next;
-        if (solve_step(label("V_hat", next)) < 0)
+        V_hat         = next;
+        const int its = solve_step(label("V_hat", next));
+        if (its == -2)
+          return false;
+        if (its < 0)
           {
             solution = backup;
             delta    = delta0;
@@ -972,7 +976,10 @@ namespace viscoslide
         controlled = next;
         const std::string what =
           label(force_control ? "F_hat" : "delta_hat", next / unit);
-        if (solve_step(what) < 0)
+        const int its = solve_step(what);
+        if (its == -2)
+          return false;
+        if (its < 0)
           {
             solution     = backup;
             delta        = delta0;

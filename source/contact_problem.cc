@@ -40,6 +40,18 @@ namespace viscoslide
 {
   namespace
   {
+    // The spring of Control = spring in force per unit length per length
+    // of approach; 0 for the other controls.
+    double
+    spring_stiffness_of(const Parameters::AllParameters &prm,
+                        const Scales                    &scales)
+    {
+      return prm.sliding.control == "spring"
+               ? prm.sliding.spring_stiffness * scales.force / scales.eps
+               : 0.;
+    }
+
+
     // Surface fields for DataOutFaces: pressure and gap from u_y and x.
     class SurfaceFields : public DataPostprocessor<2>
     {
@@ -1298,14 +1310,11 @@ namespace viscoslide
                                                  mpi_communicator);
     const auto &plan = slide_plan;
     force_control    = prm.sliding.control != "displacement";
-    spring_stiffness =
-      prm.sliding.control == "spring"
-        ? prm.sliding.spring_stiffness * scales.force / scales.eps
-        : 0.;
-    const double ds = prm.sliding.increment * h_min;
-    const double dt = ds / V;
-    slide_distance  = plan.distance;
-    slid            = committed.s - plan.s0;
+    spring_stiffness = spring_stiffness_of(prm, scales);
+    const double ds  = prm.sliding.increment * h_min;
+    const double dt  = ds / V;
+    slide_distance   = plan.distance;
+    slid             = committed.s - plan.s0;
     pcout << (resumed ? "Resuming sliding" : "Sliding")
           << " at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control: up to " << plan.distance
@@ -1440,10 +1449,7 @@ namespace viscoslide
     steady.initialize(dof_handler, solution, committed.delta, committed.s);
     if (prm.sliding.control != "displacement")
       steady.hold_force(last_quantities.normal_force,
-                        prm.sliding.control == "spring"
-                          ? prm.sliding.spring_stiffness * scales.force /
-                              scales.eps
-                          : 0.);
+                        spring_stiffness_of(prm, scales));
     pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control, by continuation from the "
           << "relaxed state" << std::endl;

@@ -190,6 +190,15 @@ namespace viscoslide
       return out;
     }
 
+    // Whether the run in `dir` had the case's parameters (its
+    // parameters.prm, compared as case_identity() does).
+    bool
+    ran_with(const fs::path &dir, const Case &c)
+    {
+      return case_identity(read_file(dir / "parameters.prm")) ==
+             case_identity(c.parameter_text);
+    }
+
     struct Status
     {
       std::string state; // "" (not run or interrupted), "done", "failed"
@@ -398,8 +407,7 @@ namespace viscoslide
           {
             if (resume)
               {
-                if (case_identity(read_file(dir / "parameters.prm")) !=
-                    case_identity(c.parameter_text))
+                if (!ran_with(dir, c))
                   throw std::runtime_error(
                     "cannot resume in '" + dir.string() +
                     "': its run had other parameters (parameters.prm)");
@@ -462,9 +470,7 @@ namespace viscoslide
             const Status   status = read_status(dir);
             if (status.state.empty())
               continue; // never run, or interrupted: run (again)
-            const bool same =
-              case_identity(read_file(dir / "parameters.prm")) ==
-              case_identity(cases[k].parameter_text);
+            const bool same = ran_with(dir, cases[k]);
             if (!same && !options.overwrite)
               error = "case folder '" + dir.string() +
                       "' holds a case run with other parameters; choose "
@@ -521,8 +527,7 @@ namespace viscoslide
         // its parameters are those of the file; otherwise it starts again.
         const bool resume = options.resume && read_status(dir).state.empty() &&
                             ContactProblem::has_checkpoint(dir) &&
-                            case_identity(read_file(dir / "parameters.prm")) ==
-                              case_identity(c.parameter_text);
+                            ran_with(dir, c);
         std::string failure;
         try
           {

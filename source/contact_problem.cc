@@ -178,7 +178,9 @@ namespace viscoslide
     , law(create_interaction_law(parameters.adhesion.law,
                                  scales.dgamma,
                                  scales.eps))
-    , indenter(std::make_unique<ParabolicIndenter>(scales.R))
+    , indenter(create_indenter(parameters.indenter,
+                               scales.R,
+                               parameters.geometry.domain_width))
     , triangulation(mpi_communicator,
                     Triangulation<dim>::limit_level_difference_at_vertices)
     , fe(FE_Q<dim>(2), dim)

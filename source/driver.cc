@@ -107,6 +107,16 @@ namespace viscoslide
       add(words(sw.spring_stiffnesses), "k", [](const std::string &v) {
         return std::vector<Setting>{{"Sliding", "Spring stiffness", v}};
       });
+      std::vector<std::string> shape_labels;
+      for (auto shape : sw.shapes)
+        {
+          std::replace(shape.begin(), shape.end(), ' ', '-');
+          shape_labels.push_back(shape);
+        }
+      add(shape_labels, "", [](std::string v) {
+        std::replace(v.begin(), v.end(), '-', ' ');
+        return std::vector<Setting>{{"Indenter", "Shape", v}};
+      });
       if (p.sliding.solver == "transient" && p.sliding.speeds.size() > 1)
         add(words(p.sliding.speeds), "V", [](const std::string &v) {
           return std::vector<Setting>{{"Sliding", "Sliding speed", v}};

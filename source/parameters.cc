@@ -1,3 +1,4 @@
+#include <viscoslide/indenter.h>
 #include <viscoslide/parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -241,6 +242,110 @@ namespace viscoslide
       require(contact_gap > 1,
               entry("Adhesion", "Contact gap threshold", contact_gap) +
                 " must exceed 1 (the equilibrium gap)");
+    }
+
+
+    void
+    IndenterProfile::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Indenter");
+      prm.declare_entry(
+        "Shape",
+        "parabola",
+        Patterns::Selection(
+          "parabola|circle|flat punch|power law|sinusoid|expression|table"),
+        "The rigid profile h(x) above its lowest point, x from the apex and "
+        "h in eps; the approach delta is measured from h = 0 (doc/model.md). "
+        "'parabola': x^2/(2R), the paper's cylinder. 'circle': the exact "
+        "circle R - sqrt(R^2 - x^2). 'flat punch': flat over |x| <= Punch "
+        "half-width, corners rounded by parabolas of Corner radius. "
+        "'power law': |x|^n/(n R^(n-1)) with n = Exponent (2: the "
+        "parabola). 'sinusoid': Amplitude (1 - cos(2 pi x/Wavelength)), "
+        "periodic. 'expression': the muParser Expression. 'table': the CSV "
+        "Profile file. R is 'Adhesion/R over eps' for every shape, so the "
+        "Tabor parameter, F_hat, V_hat and L_hat keep the paper's "
+        "normalisation whatever the shape.");
+      prm.declare_entry("Punch half-width",
+                        "100",
+                        Patterns::Double(),
+                        "Flat punch: half-width b of the flat part, in eps.");
+      prm.declare_entry("Corner radius",
+                        "1000",
+                        Patterns::Double(),
+                        "Flat punch: radius r of the parabolic corners "
+                        "(h = (|x| - b)^2/(2r) beyond b), in eps; it keeps "
+                        "the edge pressure finite. Resolve it: the corner "
+                        "contact (a - b) should span several finest cells.");
+      prm.declare_entry("Exponent",
+                        "2",
+                        Patterns::Double(),
+                        "Power law: n >= 1 (1: a wedge, 2: the parabola).");
+      prm.declare_entry("Amplitude",
+                        "10",
+                        Patterns::Double(),
+                        "Sinusoid: amplitude A in eps (peak to valley 2A).");
+      prm.declare_entry("Wavelength",
+                        "2000",
+                        Patterns::Double(),
+                        "Sinusoid: wavelength in eps; the apex radius of "
+                        "curvature is Wavelength^2/(4 pi^2 A).");
+      prm.declare_entry("Expression",
+                        "x^2/(2*R)",
+                        Patterns::Anything(),
+                        "Expression: h as a muParser function of x (both in "
+                        "eps), with the constants R (= R_hat) and pi, e.g. "
+                        "'x^2/(2*R) + 1e-7*x^4'. Its slope is taken by "
+                        "central differences of 1e-6 eps.");
+      prm.declare_entry("Profile file",
+                        "",
+                        Patterns::Anything(),
+                        "Table: a CSV file (path relative to the working "
+                        "directory) with a header naming the columns "
+                        "x_over_eps and h_over_eps, x increasing; '#' lines "
+                        "are comments. h is interpolated linearly and "
+                        "continues flat beyond the ends, so the table "
+                        "should cover the contact and the sliding "
+                        "distance. The file is read when the parameters "
+                        "are, and a changed file is not detected by "
+                        "--resume.");
+      prm.leave_subsection();
+    }
+
+    void
+    IndenterProfile::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Indenter");
+      shape         = prm.get("Shape");
+      half_width    = prm.get_double("Punch half-width");
+      corner_radius = prm.get_double("Corner radius");
+      exponent      = prm.get_double("Exponent");
+      amplitude     = prm.get_double("Amplitude");
+      wavelength    = prm.get_double("Wavelength");
+      expression    = prm.get("Expression");
+      profile_file  = prm.get("Profile file");
+      prm.leave_subsection();
+      const auto positive = [](const char *name, const double v) {
+        require(v > 0 && std::isfinite(v),
+                entry("Indenter", name, v) + " must be positive");
+      };
+      if (shape == "flat punch")
+        {
+          require(half_width >= 0 && std::isfinite(half_width),
+                  entry("Indenter", "Punch half-width", half_width) +
+                    " must be zero or positive");
+          positive("Corner radius", corner_radius);
+        }
+      if (shape == "power law")
+        require(exponent >= 1 && std::isfinite(exponent),
+                entry("Indenter", "Exponent", exponent) +
+                  " must be at least 1 (a finite slope at the apex)");
+      if (shape == "sinusoid")
+        {
+          positive("Amplitude", amplitude);
+          positive("Wavelength", wavelength);
+        }
+      require(shape != "table" || !profile_file.empty(),
+              "'Indenter/Shape' = table needs a 'Indenter/Profile file'");
     }
 
 
@@ -739,6 +844,16 @@ namespace viscoslide
                         "Comma-separated k_hat values; each replaces "
                         "Sliding/Spring stiffness (used where Control is "
                         "spring).");
+      prm.declare_entry(
+        "Indenter shapes",
+        "",
+        Patterns::List(
+          Patterns::Selection(
+            "parabola|circle|flat punch|power law|sinusoid|expression|table"),
+          0),
+        "Comma-separated shapes; each replaces Indenter/Shape (the other "
+        "Indenter entries apply to the shape that uses them). Case folders "
+        "are named by the shape with '-' for spaces.");
       prm.leave_subsection();
     }
 
@@ -774,6 +889,7 @@ namespace viscoslide
       loads              = numbers("Loads", false);
       controls           = Utilities::split_string_list(prm.get("Controls"));
       spring_stiffnesses = numbers("Spring stiffnesses", true);
+      shapes = Utilities::split_string_list(prm.get("Indenter shapes"));
       prm.leave_subsection();
       require(approaches.empty() || loads.empty(),
               "'Sweep/Approaches' and 'Sweep/Loads' are both given: a "
@@ -787,6 +903,7 @@ namespace viscoslide
       Output::declare(prm);
       Material::declare(prm);
       Adhesion::declare(prm);
+      IndenterProfile::declare(prm);
       Geometry::declare(prm);
       Loading::declare(prm);
       Mesh::declare(prm);
@@ -801,6 +918,7 @@ namespace viscoslide
       output.parse(prm);
       material.parse(prm);
       adhesion.parse(prm);
+      indenter.parse(prm);
       geometry.parse(prm);
       loading.parse(prm);
       mesh.parse(prm);
@@ -814,6 +932,9 @@ namespace viscoslide
     void
     AllParameters::check_consistency() const
     {
+      // Builds the profile once, so that an unreadable table or a bad
+      // expression is reported with the other input errors, before a run.
+      create_indenter(indenter, adhesion.R_over_eps, geometry.domain_width);
       require(mesh.finest_cell < geometry.height() / 4,
               entry("Mesh", "Finest surface cell", mesh.finest_cell) +
                 " must be well below the substrate height " +

@@ -61,6 +61,25 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
 
+    // The rigid profile h(x) (lengths in eps); see Indenter::declare.
+    struct IndenterProfile
+    {
+      std::string shape;      // parabola|circle|flat punch|power law|sinusoid|
+                              // expression|table
+      double      half_width; // flat punch
+      double      corner_radius; // flat punch
+      double      exponent;      // power law
+      double      amplitude;     // sinusoid
+      double      wavelength;    // sinusoid
+      std::string expression;    // expression: h(x) in muParser syntax
+      std::string profile_file;  // table: CSV x_over_eps,h_over_eps
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     struct Geometry
     {
       std::string substrate; // "half-plane" or "layer"
@@ -172,6 +191,7 @@ namespace viscoslide
       std::vector<double>      loads;
       std::vector<std::string> controls;
       std::vector<double>      spring_stiffnesses;
+      std::vector<std::string> shapes;
 
       static void
       declare(ParameterHandler &prm);
@@ -184,15 +204,16 @@ namespace viscoslide
     // ExcInvalidInput with the entry name and value on the first violation.
     struct AllParameters
     {
-      Output   output;
-      Material material;
-      Adhesion adhesion;
-      Geometry geometry;
-      Loading  loading;
-      Mesh     mesh;
-      Sliding  sliding;
-      Solver   solver;
-      Sweep    sweep;
+      Output          output;
+      Material        material;
+      Adhesion        adhesion;
+      IndenterProfile indenter;
+      Geometry        geometry;
+      Loading         loading;
+      Mesh            mesh;
+      Sliding         sliding;
+      Solver          solver;
+      Sweep           sweep;
 
       static void
       declare(ParameterHandler &prm);

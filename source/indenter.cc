@@ -199,7 +199,9 @@ namespace viscoslide
     Table<1, double> values(h.size());
     for (size_t i = 0; i < h.size(); ++i)
       values[i] = h[i];
-    table = std::make_unique<Functions::InterpolatedTensorProductGridData<1>>(
+    x_first = x.front();
+    x_last  = x.back();
+    table   = std::make_unique<Functions::InterpolatedTensorProductGridData<1>>(
       std::array<std::vector<double>, 1>{{x}}, values);
   }
 
@@ -212,6 +214,10 @@ namespace viscoslide
   double
   TabulatedIndenter::slope(const double xi) const
   {
+    // the profile continues flat beyond the table: its slope there is
+    // zero whatever deal.II's interpolant would extrapolate
+    if (xi <= x_first || xi >= x_last)
+      return 0.;
     return table->gradient(Point<1>(xi))[0];
   }
 

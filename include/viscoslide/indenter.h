@@ -142,6 +142,7 @@ namespace viscoslide
 
   private:
     std::unique_ptr<Functions::InterpolatedTensorProductGridData<1>> table;
+    double x_first, x_last;
   };
 
   // The shape the parameters select; R is R_hat eps. A profile that cannot

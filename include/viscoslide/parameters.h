@@ -61,7 +61,8 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
 
-    // The rigid profile h(x) (lengths in eps); see Indenter::declare.
+    // The rigid profile h(x) (lengths in eps); the entries are documented
+    // in IndenterProfile::declare, the shapes in indenter.h.
     struct IndenterProfile
     {
       std::string shape;      // parabola|circle|flat punch|power law|sinusoid|

@@ -81,7 +81,12 @@ namespace viscoslide
           return;
         std::vector<Choice> d;
         for (const auto &v : values)
-          d.push_back({v == "half-plane" ? v : prefix + v, settings_of(v)});
+          {
+            // a folder name without spaces ("flat punch" -> flat-punch)
+            std::string label = v == "half-plane" ? v : prefix + v;
+            std::replace(label.begin(), label.end(), ' ', '-');
+            d.push_back({label, settings_of(v)});
+          }
         dimensions.push_back(d);
       };
       const auto &sw = p.sweep;
@@ -107,14 +112,7 @@ namespace viscoslide
       add(words(sw.spring_stiffnesses), "k", [](const std::string &v) {
         return std::vector<Setting>{{"Sliding", "Spring stiffness", v}};
       });
-      std::vector<std::string> shape_labels;
-      for (auto shape : sw.shapes)
-        {
-          std::replace(shape.begin(), shape.end(), ' ', '-');
-          shape_labels.push_back(shape);
-        }
-      add(shape_labels, "", [](std::string v) {
-        std::replace(v.begin(), v.end(), '-', ' ');
+      add(sw.shapes, "", [](const std::string &v) {
         return std::vector<Setting>{{"Indenter", "Shape", v}};
       });
       if (p.sliding.solver == "transient" && p.sliding.speeds.size() > 1)

@@ -38,6 +38,11 @@ namespace viscoslide
           }
       }
 
+      // The choices an entry and its Sweep list share.
+      const std::string shape_choices =
+        "parabola|circle|flat punch|power law|sinusoid|expression|table";
+      const std::string control_choices = "displacement|force|spring";
+
       std::string
       entry(const std::string &section,
             const std::string &name,
@@ -252,8 +257,7 @@ namespace viscoslide
       prm.declare_entry(
         "Shape",
         "parabola",
-        Patterns::Selection(
-          "parabola|circle|flat punch|power law|sinusoid|expression|table"),
+        Patterns::Selection(shape_choices),
         "The rigid profile h(x) above its lowest point, x from the apex and "
         "h in eps; the approach delta is measured from h = 0 (doc/model.md). "
         "'parabola': x^2/(2R), the paper's cylinder. 'circle': the exact "
@@ -587,7 +591,7 @@ namespace viscoslide
       prm.declare_entry(
         "Control",
         "displacement",
-        Patterns::Selection("displacement|force|spring"),
+        Patterns::Selection(control_choices),
         "'displacement': delta stays at its value after the approach and Fn "
         "is an output. 'force': Fn stays at the value reached at the end of "
         "the approach and delta is an unknown solved with the displacements. "
@@ -835,7 +839,7 @@ namespace viscoslide
       prm.declare_entry(
         "Controls",
         "",
-        Patterns::List(Patterns::Selection("displacement|force|spring"), 0),
+        Patterns::List(Patterns::Selection(control_choices), 0),
         "Comma-separated 'displacement', 'force' and/or 'spring'; "
         "each replaces Sliding/Control.");
       prm.declare_entry("Spring stiffnesses",
@@ -847,10 +851,7 @@ namespace viscoslide
       prm.declare_entry(
         "Indenter shapes",
         "",
-        Patterns::List(
-          Patterns::Selection(
-            "parabola|circle|flat punch|power law|sinusoid|expression|table"),
-          0),
+        Patterns::List(Patterns::Selection(shape_choices), 0),
         "Comma-separated shapes; each replaces Indenter/Shape (the other "
         "Indenter entries apply to the shape that uses them). Case folders "
         "are named by the shape with '-' for spaces.");

@@ -174,7 +174,8 @@ namespace viscoslide
                (1. - std::pow(parameters.material.poisson_ratio, 2)) /
                  parameters.material.E0_over_Einf,
                parameters.material.poisson_ratio,
-               scales.tau_arm)
+               scales.tau_arm,
+               parameters.material.prony_series)
     , law(create_interaction_law(parameters.adhesion.law,
                                  scales.dgamma,
                                  scales.eps))
@@ -189,6 +190,7 @@ namespace viscoslide
     , face_quadrature(parameters.adhesion.face_quadrature_points)
     , history_fe(QGauss<1>(3))
     , history_dof_handler(triangulation)
+    , history(n_arm_stress_components * material.n_arms() + 1)
     , traction_scale(0.)
     , postprocessor(*law,
                     *indenter,
@@ -266,14 +268,16 @@ namespace viscoslide
 
   ArmStress
   ContactProblem::arm_stress_at(const std::vector<double> &values,
+                                const unsigned int         arm,
                                 const unsigned int         q) const
   {
-    const unsigned int n = quadrature.size();
+    const unsigned int n     = quadrature.size();
+    const unsigned int first = n_arm_stress_components * arm;
     ArmStress          h;
-    h.in_plane[0][0] = values[h_xx * n + q];
-    h.in_plane[1][1] = values[h_yy * n + q];
-    h.in_plane[0][1] = values[h_xy * n + q];
-    h.zz             = values[h_zz * n + q];
+    h.in_plane[0][0] = values[(first + h_xx) * n + q];
+    h.in_plane[1][1] = values[(first + h_yy) * n + q];
+    h.in_plane[0][1] = values[(first + h_xy) * n + q];
+    h.zz             = values[(first + h_zz) * n + q];
     return h;
   }
 
@@ -356,10 +360,17 @@ namespace viscoslide
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const ArmStress h =
-                material.updated_arm_stress(arm_stress_at(history_values, q),
-                                            strain[q] - old_strain[q],
-                                            factors);
+              ArmStress h;
+              for (unsigned int k = 0; k < material.n_arms(); ++k)
+                {
+                  const ArmStress h_k = material.updated_arm_stress(
+                    k,
+                    arm_stress_at(history_values, k, q),
+                    strain[q] - old_strain[q],
+                    factors[k]);
+                  h.in_plane += h_k.in_plane;
+                  h.zz += h_k.zz;
+                }
               const SymmetricTensor<2, dim> sigma =
                 material.stress(strain[q], h);
               const double JxW = fe_values.JxW(q);
@@ -727,18 +738,22 @@ namespace viscoslide
           read_cell_history(cell, values, history_dofs);
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const ArmStress old_h = arm_stress_at(values, q);
-              const ArmStress h =
-                material.updated_arm_stress(old_h,
-                                            strain[q] - old_strain[q],
-                                            factors);
-              const auto i     = history_dofs[quadrature_to_history_dof[q]];
-              history[h_xx](i) = h.in_plane[0][0];
-              history[h_yy](i) = h.in_plane[1][1];
-              history[h_xy](i) = h.in_plane[0][1];
-              history[h_zz](i) = h.zz;
-              history[dissipated_energy](i) +=
-                material.dissipated_energy(old_h, h, current.dt);
+              const auto i = history_dofs[quadrature_to_history_dof[q]];
+              double     dissipated = 0.;
+              for (unsigned int k = 0; k < material.n_arms(); ++k)
+                {
+                  const ArmStress old_h = arm_stress_at(values, k, q);
+                  const ArmStress h     = material.updated_arm_stress(
+                    k, old_h, strain[q] - old_strain[q], factors[k]);
+                  const unsigned int first = n_arm_stress_components * k;
+                  history[first + h_xx](i) = h.in_plane[0][0];
+                  history[first + h_yy](i) = h.in_plane[1][1];
+                  history[first + h_xy](i) = h.in_plane[0][1];
+                  history[first + h_zz](i) = h.zz;
+                  dissipated +=
+                    material.dissipated_energy(k, old_h, h, current.dt);
+                }
+              history[dissipated_energy()](i) += dissipated;
             }
         }
     for (auto &h : history)
@@ -821,14 +836,13 @@ namespace viscoslide
 
   // SolutionTransfer needs the history with the ghost values of the
   // cells' neighbours.
-  std::array<TrilinosWrappers::MPI::Vector,
-             ContactProblem::n_history_components>
+  std::vector<TrilinosWrappers::MPI::Vector>
   ContactProblem::ghosted_history() const
   {
     IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(history_dof_handler, relevant);
-    std::array<TrilinosWrappers::MPI::Vector, n_history_components> ghosted;
-    for (unsigned int c = 0; c < n_history_components; ++c)
+    std::vector<TrilinosWrappers::MPI::Vector> ghosted(history.size());
+    for (unsigned int c = 0; c < history.size(); ++c)
       {
         ghosted[c].reinit(history_dof_handler.locally_owned_dofs(),
                           relevant,
@@ -1111,14 +1125,22 @@ namespace viscoslide
           read_cell_history(cell, values, history_dofs);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              const ArmStress h     = arm_stress_at(values, q);
-              const auto      sigma = material.stress(strain[q], h);
-              const auto      i = history_dofs[quadrature_to_history_dof[q]];
-              fields[s_xx](i)   = sigma[0][0];
-              fields[s_yy](i)   = sigma[1][1];
-              fields[s_xy](i)   = sigma[0][1];
-              fields[s_zz](i)   = material.stress_zz(strain[q], h);
-              fields[D](i)      = material.dissipation_rate(h);
+              ArmStress h;
+              double    rate = 0.;
+              for (unsigned int k = 0; k < material.n_arms(); ++k)
+                {
+                  const ArmStress h_k = arm_stress_at(values, k, q);
+                  h.in_plane += h_k.in_plane;
+                  h.zz += h_k.zz;
+                  rate += material.dissipation_rate(k, h_k);
+                }
+              const auto sigma = material.stress(strain[q], h);
+              const auto i     = history_dofs[quadrature_to_history_dof[q]];
+              fields[s_xx](i)  = sigma[0][0];
+              fields[s_yy](i)  = sigma[1][1];
+              fields[s_xy](i)  = sigma[0][1];
+              fields[s_zz](i)  = material.stress_zz(strain[q], h);
+              fields[D](i)     = rate;
             }
         }
     for (auto &f : fields)
@@ -1144,11 +1166,11 @@ namespace viscoslide
     for (unsigned int f = 0; f < n_fields; ++f)
       data_out.add_data_vector(history_dof_handler, fields[f], names[f]);
     data_out.add_data_vector(history_dof_handler,
-                             history[dissipated_energy],
+                             history[dissipated_energy()],
                              "dissipated_energy");
     // The paper's Fig. 5 shows it in units of dgamma/L (L the present
     // contact length); zero while there is no contact.
-    TrilinosWrappers::MPI::Vector energy_hat(history[dissipated_energy]);
+    TrilinosWrappers::MPI::Vector energy_hat(history[dissipated_energy()]);
     energy_hat *= last_quantities.contact_length / scales.dgamma;
     data_out.add_data_vector(history_dof_handler,
                              energy_hat,
@@ -1200,8 +1222,10 @@ namespace viscoslide
           fe_values.reinit(cell);
           read_cell_history(cell, values, history_dofs);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
-            rate += material.dissipation_rate(arm_stress_at(values, q)) *
-                    fe_values.JxW(q);
+            for (unsigned int k = 0; k < material.n_arms(); ++k)
+              rate +=
+                material.dissipation_rate(k, arm_stress_at(values, k, q)) *
+                fe_values.JxW(q);
         }
     return Utilities::MPI::sum(rate, mpi_communicator);
   }

@@ -1,5 +1,6 @@
 #include <viscoslide/material.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -24,102 +25,139 @@ namespace viscoslide
   } // namespace
 
 
-  StandardLinearSolid::StandardLinearSolid(const double E0,
-                                           const double Einf,
-                                           const double nu,
-                                           const double tau)
-    : E1(Einf - E0)
-    , nu(nu)
-    , tau(tau)
+  ViscoelasticSolid::ViscoelasticSolid(const double                  E0,
+                                       const double                  Einf,
+                                       const double                  nu,
+                                       const double                  tau,
+                                       const std::vector<PronyTerm> &series)
+    : nu(nu)
     , lambda0(lame_lambda(E0, nu))
-    , lambda1(lame_lambda(E1, nu))
     , C0(plane_strain_stiffness(lambda0, E0 / (2. * (1. + nu))))
-    , C1(plane_strain_stiffness(lambda1, E1 / (2. * (1. + nu))))
   {
+    const std::vector<PronyTerm> terms =
+      series.empty() ? std::vector<PronyTerm>{{1., 1.}} : series;
+    double total = 0.;
+    for (const auto &t : terms)
+      total += t.weight;
+    // One arm: E_1 = 1 * (Einf - E0) exactly, the standard linear solid
+    // bit for bit.
+    for (const auto &t : terms)
+      {
+        const double E = (t.weight / total) * (Einf - E0);
+        arms.push_back(
+          {E,
+           t.time_ratio * tau,
+           lame_lambda(E, nu),
+           plane_strain_stiffness(lame_lambda(E, nu), E / (2. * (1. + nu)))});
+      }
   }
 
 
-  StandardLinearSolid::StepFactors
-  StandardLinearSolid::step_factors(const double dt) const
+  std::vector<ViscoelasticSolid::StepFactors>
+  ViscoelasticSolid::step_factors(const double dt) const
   {
-    if (!std::isfinite(dt))
-      return {0., 0.};
-    const double x = dt / tau;
-    if (x < 1e-8) // avoid 0/0; gamma = 1 - x/2 + O(x^2)
-      return {std::exp(-x), 1. - 0.5 * x};
-    return {std::exp(-x), -std::expm1(-x) / x};
+    std::vector<StepFactors> factors;
+    for (const auto &arm : arms)
+      {
+        const double x = dt / arm.tau;
+        if (!std::isfinite(dt))
+          factors.push_back({0., 0.});
+        else if (x < 1e-8) // avoid 0/0; gamma = 1 - x/2 + O(x^2)
+          factors.push_back({std::exp(-x), 1. - 0.5 * x});
+        else
+          factors.push_back({std::exp(-x), -std::expm1(-x) / x});
+      }
+    return factors;
   }
 
 
   ArmStress
-  StandardLinearSolid::updated_arm_stress(
+  ViscoelasticSolid::updated_arm_stress(
+    const unsigned int           k,
     const ArmStress             &old_h,
     const SymmetricTensor<2, 2> &strain_increment,
     const StepFactors           &f) const
   {
     ArmStress h;
-    h.in_plane = f.a * old_h.in_plane + f.gamma * (C1 * strain_increment);
-    h.zz       = f.a * old_h.zz + f.gamma * lambda1 * trace(strain_increment);
+    h.in_plane =
+      f.a * old_h.in_plane + f.gamma * (arms[k].C * strain_increment);
+    h.zz = f.a * old_h.zz + f.gamma * arms[k].lambda * trace(strain_increment);
     return h;
   }
 
 
   SymmetricTensor<2, 2>
-  StandardLinearSolid::stress(const SymmetricTensor<2, 2> &strain,
-                              const ArmStress             &h) const
+  ViscoelasticSolid::stress(const SymmetricTensor<2, 2> &strain,
+                            const ArmStress             &h) const
   {
     return C0 * strain + h.in_plane;
   }
 
 
   double
-  StandardLinearSolid::stress_zz(const SymmetricTensor<2, 2> &strain,
-                                 const ArmStress             &h) const
+  ViscoelasticSolid::stress_zz(const SymmetricTensor<2, 2> &strain,
+                               const ArmStress             &h) const
   {
     return lambda0 * trace(strain) + h.zz;
   }
 
 
   SymmetricTensor<4, 2>
-  StandardLinearSolid::tangent(const StepFactors &f) const
+  ViscoelasticSolid::tangent(const std::vector<StepFactors> &f) const
   {
-    return C0 + f.gamma * C1;
+    SymmetricTensor<4, 2> C = C0;
+    for (unsigned int k = 0; k < arms.size(); ++k)
+      C += f[k].gamma * arms[k].C;
+    return C;
   }
 
 
   double
-  StandardLinearSolid::arm_energy(const ArmStress &h) const
+  ViscoelasticSolid::arm_energy(const unsigned int k, const ArmStress &h) const
   {
-    if (E1 <= 0.)
+    if (arms[k].E <= 0.)
       return 0.;
-    // h : C1^{-1} : h with C1^{-1} = ((1 + nu) I - nu 1 x 1)/E1 in 3D.
+    // h : C^{-1} : h with C^{-1} = ((1 + nu) I - nu 1 x 1)/E in 3D.
     const double hh = h.in_plane * h.in_plane + h.zz * h.zz;
     const double tr = trace(h.in_plane) + h.zz;
-    return 0.5 * ((1. + nu) * hh - nu * tr * tr) / E1;
+    return 0.5 * ((1. + nu) * hh - nu * tr * tr) / arms[k].E;
   }
 
 
   ArmStress
-  StandardLinearSolid::arm_stress(const SymmetricTensor<2, 2> &arm_strain) const
+  ViscoelasticSolid::arm_stress(const unsigned int           k,
+                                const SymmetricTensor<2, 2> &arm_strain) const
   {
-    return {C1 * arm_strain, lambda1 * trace(arm_strain)};
+    return {arms[k].C * arm_strain, arms[k].lambda * trace(arm_strain)};
   }
 
 
   double
-  StandardLinearSolid::dissipation_rate(const ArmStress &h) const
+  ViscoelasticSolid::dissipation_rate(const unsigned int k,
+                                      const ArmStress   &h) const
   {
-    return 2. * arm_energy(h) / tau;
+    return 2. * arm_energy(k, h) / arms[k].tau;
   }
 
 
   double
-  StandardLinearSolid::dissipated_energy(const ArmStress &old_h,
-                                         const ArmStress &new_h,
-                                         const double     dt) const
+  ViscoelasticSolid::dissipated_energy(const unsigned int k,
+                                       const ArmStress   &old_h,
+                                       const ArmStress   &new_h,
+                                       const double       dt) const
   {
     if (!std::isfinite(dt))
-      return arm_energy(old_h);
-    return 0.5 * dt * (dissipation_rate(old_h) + dissipation_rate(new_h));
+      return arm_energy(k, old_h);
+    return 0.5 * dt * (dissipation_rate(k, old_h) + dissipation_rate(k, new_h));
+  }
+
+
+  double
+  ViscoelasticSolid::longest_relaxation_time() const
+  {
+    double longest = 0.;
+    for (const auto &arm : arms)
+      longest = std::max(longest, arm.tau);
+    return longest;
   }
 } // namespace viscoslide

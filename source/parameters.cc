@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -51,6 +52,84 @@ namespace viscoslide
         std::ostringstream s;
         s << "'" << section << "/" << name << "' = " << value;
         return s.str();
+      }
+
+      // A Prony term's weight and time must be positive and finite; where
+      // names the list or the file row.
+      PronyTerm
+      prony_term(const double       weight,
+                 const double       time_ratio,
+                 const std::string &where)
+      {
+        require(std::isfinite(weight) && weight > 0,
+                where + ": the weight must be a positive number");
+        require(std::isfinite(time_ratio) && time_ratio > 0,
+                where + ": the relaxation time must be a positive number");
+        return {weight, time_ratio};
+      }
+
+      std::vector<PronyTerm>
+      prony_series_from_lists(const std::string &weights,
+                              const std::string &times)
+      {
+        const auto w = Utilities::split_string_list(weights);
+        const auto t = Utilities::split_string_list(times);
+        require(w.size() == t.size(),
+                "'Material/Prony weights' has " + std::to_string(w.size()) +
+                  " entries and 'Material/Prony relaxation times' " +
+                  std::to_string(t.size()) + ": one of each per arm");
+        std::vector<PronyTerm> series;
+        for (unsigned int k = 0; k < w.size(); ++k)
+          series.push_back(
+            prony_term(to_number(w[k]),
+                       to_number(t[k]),
+                       "'Material/Prony weights' = " + weights +
+                         ", 'Prony relaxation times' = " + times + ", arm " +
+                         std::to_string(k + 1)));
+        return series;
+      }
+
+      std::vector<PronyTerm>
+      prony_series_from_file(const std::string &filename)
+      {
+        const std::string name = "'Material/Prony file' = " + filename;
+        std::ifstream     in(filename);
+        require(static_cast<bool>(in), name + ": cannot read the file");
+        std::vector<PronyTerm> series;
+        int                    weight_column = -1, time_column = -1;
+        std::string            line;
+        for (unsigned int line_number = 1; std::getline(in, line);
+             ++line_number)
+          {
+            line = Utilities::trim(line);
+            if (line.empty() || line[0] == '#')
+              continue;
+            const auto words = Utilities::split_string_list(line, ',');
+            if (weight_column < 0)
+              {
+                for (unsigned int i = 0; i < words.size(); ++i)
+                  {
+                    if (words[i] == "weight")
+                      weight_column = i;
+                    if (words[i] == "tau_over_tau")
+                      time_column = i;
+                  }
+                require(weight_column >= 0 && time_column >= 0,
+                        name + ": the header needs the columns weight and "
+                               "tau_over_tau");
+                continue;
+              }
+            const std::string where =
+              name + ", line " + std::to_string(line_number);
+            require(static_cast<int>(words.size()) >
+                      std::max(weight_column, time_column),
+                    where + ": too few columns");
+            series.push_back(prony_term(to_number(words[weight_column]),
+                                        to_number(words[time_column]),
+                                        where));
+          }
+        require(!series.empty(), name + ": no arm in the file");
+        return series;
       }
     } // namespace
 
@@ -157,6 +236,34 @@ namespace viscoslide
         "wording). 'retardation': tau is the creep (retardation) time "
         "tau_c = tau_relaxation Einf/E0 of J(t) = 1/E0 - (1/E0 - 1/Einf) "
         "exp(-t/tau_c). The choice is written into every output file.");
+      prm.declare_entry(
+        "Prony weights",
+        "",
+        Patterns::Anything(),
+        "Generalised Maxwell solid (Prony series): a comma-separated list of "
+        "positive weights w_k, one per Maxwell arm. Arm k carries the "
+        "modulus E_k = w_k (Einf - E0) / sum(w), so 'E0 over Einf' still "
+        "fixes the slow and fast limits and the weights only share out "
+        "Einf - E0; measured moduli E_k (in any unit) may be given as they "
+        "are. Empty (default): one arm, the standard linear solid of the "
+        "paper. Needs 'Prony relaxation times' of the same length; not "
+        "together with 'Prony file'.");
+      prm.declare_entry(
+        "Prony relaxation times",
+        "",
+        Patterns::Anything(),
+        "The relaxation times tau_k/tau of the arms of 'Prony weights', "
+        "positive, in units of the reference time tau of V_hat and "
+        "time_over_tau. E(t) = E0 + sum_k E_k exp(-t/tau_k).");
+      prm.declare_entry(
+        "Prony file",
+        "",
+        Patterns::Anything(),
+        "The Prony series as a CSV file (path relative to the working "
+        "directory; lines starting with # are comments) with a header "
+        "naming the columns weight and tau_over_tau, one arm per row: a "
+        "measured relaxation spectrum (weights as 'Prony weights', times "
+        "as 'Prony relaxation times'). Empty: the lists above.");
       prm.leave_subsection();
     }
 
@@ -164,10 +271,22 @@ namespace viscoslide
     Material::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      E0_over_Einf  = prm.get_double("E0 over Einf");
-      poisson_ratio = prm.get_double("Poisson ratio");
-      time_constant = prm.get("Time constant");
+      E0_over_Einf              = prm.get_double("E0 over Einf");
+      poisson_ratio             = prm.get_double("Poisson ratio");
+      time_constant             = prm.get("Time constant");
+      const std::string weights = prm.get("Prony weights"),
+                        times   = prm.get("Prony relaxation times"),
+                        file    = prm.get("Prony file");
       prm.leave_subsection();
+      require(file.empty() || (weights.empty() && times.empty()),
+              "'Material/Prony file' and 'Material/Prony weights' or "
+              "'Material/Prony relaxation times' are both set: give the "
+              "series one way");
+      prony_series = file.empty() ? prony_series_from_lists(weights, times)
+                                  : prony_series_from_file(file);
+      require(prony_series.size() <= 1 || time_constant == "relaxation",
+              "'Material/Time constant' = retardation is defined for one "
+              "Maxwell arm only; a Prony series needs relaxation");
       require(E0_over_Einf > 0 && E0_over_Einf <= 1,
               entry("Material", "E0 over Einf", E0_over_Einf) +
                 " is outside (0, 1]: Einf must not be smaller than E0");

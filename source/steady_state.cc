@@ -30,9 +30,10 @@ namespace viscoslide
 {
   namespace
   {
-    // FESystem components: displacement, then the viscous strain.
+    // FESystem components: displacement, then the viscous strain of each
+    // Maxwell arm (xx, yy, xy of arm k at 2 + 3 k ... 4 + 3 k).
     constexpr unsigned int first_strain_component = 2;
-    constexpr unsigned int n_strain_components    = 3; // xx, yy, xy
+    constexpr unsigned int components_per_arm     = 3;
 
     // Strain component c (xx, yy, xy) of a symmetric tensor.
     double
@@ -107,12 +108,20 @@ namespace viscoslide
         }
     }
 
+    // Viscous strain of one arm from the values of all components.
+    SymmetricTensor<2, 2>
+    viscous_strain(const Vector<double> &v, const unsigned int arm)
+    {
+      const unsigned int c = first_strain_component + components_per_arm * arm;
+      return strain_tensor(v[c], v[c + 1], v[c + 2]);
+    }
+
     // Stress and dissipation density from u and eps_v, for DataOut. They
     // use eps(u), not its projection: exact for degree 2.
     class SteadyFields : public DataPostprocessor<2>
     {
     public:
-      explicit SteadyFields(const StandardLinearSolid &material)
+      explicit SteadyFields(const ViscoelasticSolid &material)
         : material(material)
       {
       }
@@ -128,14 +137,22 @@ namespace viscoslide
             const auto &g = inputs.solution_gradients[q];
             const auto  strain =
               strain_tensor(g[0][0], g[1][1], 0.5 * (g[0][1] + g[1][0]));
-            const auto h =
-              material.arm_stress(strain - strain_tensor(v[2], v[3], v[4]));
+            ArmStress h;
+            double    rate = 0.;
+            for (unsigned int k = 0; k < material.n_arms(); ++k)
+              {
+                const auto h_k =
+                  material.arm_stress(k, strain - viscous_strain(v, k));
+                h.in_plane += h_k.in_plane;
+                h.zz += h_k.zz;
+                rate += material.dissipation_rate(k, h_k);
+              }
             const auto sigma = material.stress(strain, h);
             computed[q](0)   = sigma[0][0];
             computed[q](1)   = sigma[1][1];
             computed[q](2)   = sigma[0][1];
             computed[q](3)   = material.stress_zz(strain, h);
-            computed[q](4)   = material.dissipation_rate(h);
+            computed[q](4)   = rate;
           }
       }
 
@@ -156,7 +173,7 @@ namespace viscoslide
       }
 
     private:
-      const StandardLinearSolid &material;
+      const ViscoelasticSolid &material;
     };
   } // namespace
 
@@ -164,7 +181,7 @@ namespace viscoslide
   SteadyStateSolver::SteadyStateSolver(
     const Parameters::AllParameters         &prm,
     const Scales                            &scales,
-    const StandardLinearSolid               &material,
+    const ViscoelasticSolid                 &material,
     const InteractionLaw                    &law,
     const Indenter                          &indenter,
     const SurfacePostprocessor              &postprocessor,
@@ -181,6 +198,7 @@ namespace viscoslide
     , mpi_communicator(triangulation.get_communicator())
     , pcout(std::cout,
             dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , n_strain_components(components_per_arm * material.n_arms())
     , fe(FE_Q<dim>(2),
          dim,
          FE_DGQ<dim>(prm.sliding.viscous_strain_degree),
@@ -189,7 +207,6 @@ namespace viscoslide
     , quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
     , face_quadrature(prm.adhesion.face_quadrature_points)
     , flux_quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
-    , strain_row_scale(material.arm_modulus())
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == first_strain_component)
@@ -282,7 +299,7 @@ namespace viscoslide
     Vector<double>                       u_local(u_fe.n_dofs_per_cell());
     std::vector<SymmetricTensor<2, dim>> strain(n_q);
     // The DG dofs of one component, and their local mass matrix.
-    std::vector<unsigned int> strain_dofs[n_strain_components];
+    std::vector<std::vector<unsigned int>> strain_dofs(n_strain_components);
     for (unsigned int i = 0; i < n; ++i)
       if (const unsigned int c = fe.system_to_component_index(i).first;
           c >= first_strain_component)
@@ -322,7 +339,8 @@ namespace viscoslide
                   {
                     const double wa = values.shape_value(d[a], q);
                     rhs(a) +=
-                      strain_component(strain[q], c) * wa * values.JxW(q);
+                      strain_component(strain[q], c % components_per_arm) * wa *
+                      values.JxW(q);
                     for (unsigned int b = 0; b < m; ++b)
                       mass(a, b) +=
                         wa * values.shape_value(d[b], q) * values.JxW(q);
@@ -351,13 +369,16 @@ namespace viscoslide
 
 
   // Residual -R and, if asked, the Jacobian dR/dx of
-  //   R_u(v)  = (C0 eps(u) + C1 (eps(u) - eps_v), eps(v)) - <p(g), v_y>_top
-  //   R_e(w)  = k sum_K [ (V tau eps_v, dw/dx)_K + (eps_v - eps(u), w)_K
-  //             + V tau <eps_v, w>_left(K) - V tau <eps_v^right, w>_right(K) ]
-  // for each strain component: the upwind DG form of
-  // -V tau d(eps_v)/dx + eps_v = eps(u), in which a cell's right face is
-  // its inflow face (material moves towards -x) and eps_v^right the value
-  // on the right neighbour (0 at x = +W/2). k = Einf - E0 makes R_e a force.
+  //   R_u(v)  = (C0 eps(u) + sum_k C_k (eps(u) - eps_v,k), eps(v))
+  //             - <p(g), v_y>_top
+  //   R_e(w)  = E_k sum_K [ (V tau_k eps_v, dw/dx)_K + (eps_v - eps(u), w)_K
+  //             + V tau_k <eps_v, w>_left(K)
+  //             - V tau_k <eps_v^right, w>_right(K) ]
+  // for each strain component of each arm k: the upwind DG form of
+  // -V tau_k d(eps_v,k)/dx + eps_v,k = eps(u), in which a cell's right face
+  // is its inflow face (material moves towards -x) and eps_v^right the value
+  // on the right neighbour (0 at x = +W/2). The arm modulus E_k makes R_e a
+  // force.
   void
   SteadyStateSolver::assemble(const bool with_matrix)
   {
@@ -374,11 +395,21 @@ namespace viscoslide
       delta_coupling = 0;
     double force = 0., delta_stiff = 0., abs_force = 0.;
 
-    const double ell =
-      V_hat * scales.eps / scales.tau_ref * material.relaxation_time(); // V tau
-    const double                 k  = strain_row_scale;
-    const SymmetricTensor<4, 2>  C0 = material.tangent({0., 0.});
-    const SymmetricTensor<4, 2> &C1 = material.arm_stiffness();
+    // Per strain component: the arm's relaxation length V tau_k and its
+    // row scale E_k.
+    const unsigned int  n_arms = material.n_arms();
+    std::vector<double> ell(n_strain_components), k(n_strain_components);
+    for (unsigned int c = 0; c < n_strain_components; ++c)
+      {
+        const unsigned int arm = c / components_per_arm;
+        ell[c] =
+          V_hat * scales.eps / scales.tau_ref * material.relaxation_time(arm);
+        k[c] = material.arm_modulus(arm);
+      }
+    const SymmetricTensor<4, 2> &C0    = material.relaxed_stiffness();
+    SymmetricTensor<4, 2>        C_sum = material.arm_stiffness(0);
+    for (unsigned int a = 1; a < n_arms; ++a)
+      C_sum += material.arm_stiffness(a);
 
     const UpdateFlags face_flags =
       update_values | update_quadrature_points | update_JxW_values;
@@ -389,12 +420,11 @@ namespace viscoslide
       neighbor_face_values(fe, flux_quadrature, face_flags);
     FESubfaceValues<dim> subface_values(fe, flux_quadrature, face_flags),
       neighbor_subface_values(fe, flux_quadrature, face_flags);
-    const FEValuesExtractors::Vector displacement(0);
-    const FEValuesExtractors::Scalar uy(1);
-    const FEValuesExtractors::Scalar strain_x[n_strain_components] = {
-      FEValuesExtractors::Scalar(first_strain_component),
-      FEValuesExtractors::Scalar(first_strain_component + 1),
-      FEValuesExtractors::Scalar(first_strain_component + 2)};
+    const FEValuesExtractors::Vector        displacement(0);
+    const FEValuesExtractors::Scalar        uy(1);
+    std::vector<FEValuesExtractors::Scalar> strain_x;
+    for (unsigned int c = 0; c < n_strain_components; ++c)
+      strain_x.emplace_back(first_strain_component + c);
 
     const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
     FullMatrix<double> cell_matrix(n, n), flux_matrix(n, n);
@@ -404,16 +434,17 @@ namespace viscoslide
       grad_phi(n), projected_grad(n), grad_phi_q(n_q), projected_grad_q(n_q);
     Table<2, SymmetricTensor<2, dim>> grad_phi_table(n_q, n),
       projected_grad_table(n_q, n);
-    std::vector<double> e[n_strain_components], e_face(n_q);
-    std::vector<double> u_y(face_quadrature.size()),
+    std::vector<std::vector<double>> e(n_strain_components,
+                                       std::vector<double>(n_q));
+    std::vector<double>              e_face(n_q);
+    std::vector<double>              u_y(face_quadrature.size()),
       anchor_u_y(face_quadrature.size());
     std::vector<double> phi(n), phi_x(n), phi_y(n);
     // Component of each local dof: 0, 1 displacement, 2.. strain.
     std::vector<unsigned int> component(n);
     for (unsigned int i = 0; i < n; ++i)
       component[i] = fe.system_to_component_index(i).first;
-    for (auto &v : e)
-      v.resize(n_q);
+    std::vector<SymmetricTensor<2, dim>> eps_v(n_arms), C_arm_i(n_arms);
 
     // The inflow term of the cell's right face: mine is this cell's side,
     // theirs the right neighbour's, on matching quadrature points.
@@ -434,12 +465,12 @@ namespace viscoslide
                 if (component[i] == first_strain_component + c)
                   {
                     const double w = mine.shape_value(i, q);
-                    cell_rhs(i) += k * ell * e_face[q] * w * JxW;
+                    cell_rhs(i) += k[c] * ell[c] * e_face[q] * w * JxW;
                     if (with_matrix)
                       for (unsigned int j = 0; j < n; ++j)
                         if (component[j] == component[i])
                           flux_matrix(i, j) -=
-                            k * ell * theirs.shape_value(j, q) * w * JxW;
+                            k[c] * ell[c] * theirs.shape_value(j, q) * w * JxW;
                   }
             }
         }
@@ -485,9 +516,14 @@ namespace viscoslide
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const auto eps_v = strain_tensor(e[0][q], e[1][q], e[2][q]);
-              const SymmetricTensor<2, dim> sigma =
-                C0 * strain[q] + C1 * (projected_strain[q] - eps_v);
+              SymmetricTensor<2, dim> sigma = C0 * strain[q];
+              for (unsigned int a = 0; a < n_arms; ++a)
+                {
+                  const unsigned int c = components_per_arm * a;
+                  eps_v[a] = strain_tensor(e[c][q], e[c + 1][q], e[c + 2][q]);
+                  sigma += material.arm_stiffness(a) *
+                           (projected_strain[q] - eps_v[a]);
+                }
               const double JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
                 {
@@ -502,38 +538,52 @@ namespace viscoslide
                     cell_rhs(i) -= sigma * grad_phi[i] * JxW;
                     if (with_matrix)
                       {
-                        const auto C0_i = C0 * grad_phi[i];
-                        const auto C1_i = C1 * grad_phi[i];
+                        const auto C0_i    = C0 * grad_phi[i];
+                        const auto C_sum_i = C_sum * grad_phi[i];
+                        for (unsigned int a = 0; a < n_arms; ++a)
+                          C_arm_i[a] = material.arm_stiffness(a) * grad_phi[i];
                         for (unsigned int j = 0; j < n; ++j)
-                          cell_matrix(i, j) +=
-                            (component[j] < first_strain_component
-                               ? C0_i * grad_phi[j] + C1_i * projected_grad[j]
-                               : -(C1_i * unit_strain(component[j] -
-                                                      first_strain_component)) *
-                                   phi[j]) *
-                            JxW;
+                          {
+                            if (component[j] < first_strain_component)
+                              cell_matrix(i, j) +=
+                                (C0_i * grad_phi[j] +
+                                 C_sum_i * projected_grad[j]) *
+                                JxW;
+                            else
+                              {
+                                const unsigned int c =
+                                  component[j] - first_strain_component;
+                                cell_matrix(i, j) -=
+                                  (C_arm_i[c / components_per_arm] *
+                                   unit_strain(c % components_per_arm)) *
+                                  phi[j] * JxW;
+                              }
+                          }
                       }
                   }
                 else
                   {
                     const unsigned int c =
                       component[i] - first_strain_component;
-                    const double ec = strain_component(eps_v, c);
+                    const unsigned int cc = c % components_per_arm;
+                    const double       ec =
+                      strain_component(eps_v[c / components_per_arm], cc);
                     cell_rhs(i) -=
-                      k *
-                      (ell * ec * phi_x[i] +
-                       (ec - strain_component(strain[q], c)) * phi[i]) *
+                      k[c] *
+                      (ell[c] * ec * phi_x[i] +
+                       (ec - strain_component(strain[q], cc)) * phi[i]) *
                       JxW;
                     if (with_matrix)
                       for (unsigned int j = 0; j < n; ++j)
                         {
                           if (component[j] < first_strain_component)
                             cell_matrix(i, j) -=
-                              k * strain_component(grad_phi[j], c) * phi[i] *
-                              JxW;
+                              k[c] * strain_component(grad_phi[j], cc) *
+                              phi[i] * JxW;
                           else if (component[j] == component[i])
-                            cell_matrix(i, j) +=
-                              k * (ell * phi_x[i] + phi[i]) * phi[j] * JxW;
+                            cell_matrix(i, j) += k[c] *
+                                                 (ell[c] * phi_x[i] + phi[i]) *
+                                                 phi[j] * JxW;
                         }
                   }
             }
@@ -582,7 +632,7 @@ namespace viscoslide
                         }
                     }
                 }
-              if (ell == 0.)
+              if (V_hat == 0.)
                 continue;
               // The coarse cells are axis-aligned rectangles in standard
               // orientation: face 0 is the left (outflow), face 1 the right
@@ -600,13 +650,14 @@ namespace viscoslide
                             {
                               const double w   = face_values.shape_value(i, q);
                               const double JxW = face_values.JxW(q);
-                              cell_rhs(i) -= k * ell * e_face[q] * w * JxW;
+                              cell_rhs(i) -=
+                                k[c] * ell[c] * e_face[q] * w * JxW;
                               if (with_matrix)
                                 for (unsigned int j = 0; j < n; ++j)
                                   if (component[j] == component[i])
                                     cell_matrix(i, j) +=
-                                      k * ell * face_values.shape_value(j, q) *
-                                      w * JxW;
+                                      k[c] * ell[c] *
+                                      face_values.shape_value(j, q) * w * JxW;
                             }
                     }
                 }
@@ -911,7 +962,8 @@ namespace viscoslide
   {
     // The first speed: relaxation length V tau a tenth of the finest cell,
     // so that the relaxed start is close to its solution.
-    double first = 0.1 * prm.mesh.finest_cell / material.relaxation_time();
+    double first =
+      0.1 * prm.mesh.finest_cell / material.longest_relaxation_time();
     const double largest_step = std::log(prm.sliding.continuation_factor);
     double       step         = largest_step;
     while (V_hat != target)
@@ -1030,13 +1082,13 @@ namespace viscoslide
                   strain,
                   projected_strain);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const auto &v = values[q];
-              rate +=
-                material.dissipation_rate(material.arm_stress(
-                  projected_strain[q] - strain_tensor(v[2], v[3], v[4]))) *
-                fe_values.JxW(q);
-            }
+            for (unsigned int a = 0; a < material.n_arms(); ++a)
+              rate += material.dissipation_rate(
+                        a,
+                        material.arm_stress(a,
+                                            projected_strain[q] -
+                                              viscous_strain(values[q], a))) *
+                      fe_values.JxW(q);
         }
     return dealii::Utilities::MPI::sum(rate, mpi_communicator);
   }
@@ -1059,11 +1111,13 @@ namespace viscoslide
                                   const unsigned int counter) const
   {
     TimerOutput::Scope       t(timer, "output");
-    std::vector<std::string> names{"displacement",
-                                   "displacement",
-                                   "viscous_strain_xx",
-                                   "viscous_strain_yy",
-                                   "viscous_strain_xy"};
+    std::vector<std::string> names{"displacement", "displacement"};
+    for (unsigned int a = 0; a < material.n_arms(); ++a)
+      for (const std::string c : {"xx", "yy", "xy"})
+        names.push_back("viscous_strain_" +
+                        (material.n_arms() > 1 ? std::to_string(a + 1) + "_"
+                                               : std::string()) +
+                        c);
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(fe.n_components(),
                      DataComponentInterpretation::component_is_scalar);

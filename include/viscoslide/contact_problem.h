@@ -75,17 +75,22 @@ namespace viscoslide
     steady_state_columns();
 
   private:
-    // Components of the quadrature-point history: the arm stress and the
-    // energy dissipated so far per unit volume.
-    enum HistoryComponent
+    // Components of the quadrature-point history: the stress of each arm
+    // (xx, yy, xy, zz of arm k at 4 k ... 4 k + 3), then the energy
+    // dissipated so far per unit volume.
+    enum ArmStressComponent
     {
       h_xx,
       h_yy,
       h_xy,
       h_zz,
-      dissipated_energy,
-      n_history_components
+      n_arm_stress_components
     };
+    unsigned int
+    dissipated_energy() const
+    {
+      return n_arm_stress_components * material.n_arms();
+    }
 
     void
     setup_system();
@@ -131,8 +136,11 @@ namespace viscoslide
     read_cell_history(const DoFHandler<dim>::active_cell_iterator &cell,
                       std::vector<double>                         &values,
                       std::vector<types::global_dof_index>        &dofs) const;
+    // Arm stress of one arm at quadrature point q from the values of
+    // read_cell_history().
     ArmStress
     arm_stress_at(const std::vector<double> &history_values,
+                  unsigned int               arm,
                   unsigned int               q) const;
     void
     commit_history();
@@ -154,7 +162,7 @@ namespace viscoslide
     TimerOutput                      timer;
 
     const Scales                          scales;
-    const StandardLinearSolid             material;
+    const ViscoelasticSolid               material;
     const std::unique_ptr<InteractionLaw> law;
     const std::unique_ptr<Indenter>       indenter;
 
@@ -189,7 +197,7 @@ namespace viscoslide
 
     // One vector per history component, non-ghosted (DG dofs of a cell are
     // owned by its owner).
-    std::array<TrilinosWrappers::MPI::Vector, n_history_components> history;
+    std::vector<TrilinosWrappers::MPI::Vector> history;
 
     LoadState committed; // state of old_solution/history
     LoadState current;   // state `solution` is an equilibrium of
@@ -281,7 +289,7 @@ namespace viscoslide
     write_checkpoint();
     void
     read_checkpoint();
-    std::array<TrilinosWrappers::MPI::Vector, n_history_components>
+    std::vector<TrilinosWrappers::MPI::Vector>
     ghosted_history() const;
 
     unsigned int step_number;

@@ -1,101 +1,144 @@
-// Standard linear solid in plane strain: a spring C0 (modulus E0) in
-// parallel with a Maxwell arm (spring C1, modulus Einf - E0, in series with
-// a dashpot of relaxation time tau). The arm stress h is the history
-// variable; its out-of-plane component h_zz is kept because the dissipation
-// depends on it (physics.md).
+// Generalised Maxwell solid (Prony series) in plane strain: a spring C0
+// (modulus E0) in parallel with N Maxwell arms, arm k a spring C_k
+// (modulus E_k) in series with a dashpot of relaxation time tau_k, so that
+//     E(t) = E0 + sum_k E_k exp(-t/tau_k),   sum_k E_k = Einf - E0.
+// One arm is the paper's standard linear solid. The arm stresses h_k are
+// the history variables; their out-of-plane components are kept because
+// the dissipation depends on them (physics.md).
 #ifndef viscoslide_material_h
 #define viscoslide_material_h
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <vector>
+
 namespace viscoslide
 {
   using namespace dealii;
 
-  // The arm stress at one quadrature point.
+  // The stress of one arm (or the sum of several) at one quadrature point.
   struct ArmStress
   {
     SymmetricTensor<2, 2> in_plane;
     double                zz = 0.;
   };
 
-  class StandardLinearSolid
+  // One term of the Prony series as the user gives it: its share of
+  // Einf - E0 (weights are normalised to sum 1) and its relaxation time in
+  // units of the reference time tau.
+  struct PronyTerm
+  {
+    double weight;
+    double time_ratio;
+  };
+
+  class ViscoelasticSolid
   {
   public:
-    // Young's moduli E0 <= Einf, Poisson ratio nu, arm relaxation time tau.
-    StandardLinearSolid(double E0, double Einf, double nu, double tau);
+    // Young's moduli E0 <= Einf, Poisson ratio nu (the same for every
+    // branch), reference time tau; arm k gets E_k = w_k (Einf - E0) and
+    // tau_k = time_ratio_k tau. An empty series is one arm {1, 1}.
+    ViscoelasticSolid(double                        E0,
+                      double                        Einf,
+                      double                        nu,
+                      double                        tau,
+                      const std::vector<PronyTerm> &series = {});
 
-    // Exact exponential integration of dh/dt + h/tau = C1 : deps/dt over a
-    // step of length dt with the strain varying linearly: the factors a and
-    // gamma of physics.md. dt = infinity is the fully relaxed limit (a =
-    // gamma = 0); dt = 0 the instantaneous one (a = gamma = 1).
+    unsigned int
+    n_arms() const
+    {
+      return arms.size();
+    }
+
+    // Exact exponential integration of dh_k/dt + h_k/tau_k = C_k : deps/dt
+    // over a step of length dt with the strain varying linearly: the
+    // factors a and gamma of physics.md, one pair per arm. dt = infinity
+    // is the fully relaxed limit (a = gamma = 0); dt = 0 the instantaneous
+    // one (a = gamma = 1).
     struct StepFactors
     {
       double a;
       double gamma;
     };
-    StepFactors
+    std::vector<StepFactors>
     step_factors(double dt) const;
 
     ArmStress
-    updated_arm_stress(const ArmStress             &old_h,
+    updated_arm_stress(unsigned int                 arm,
+                       const ArmStress             &old_h,
                        const SymmetricTensor<2, 2> &strain_increment,
                        const StepFactors           &factors) const;
 
+    // Stress from the strain and the sum of the arm stresses.
     SymmetricTensor<2, 2>
-    stress(const SymmetricTensor<2, 2> &strain, const ArmStress &h) const;
+    stress(const SymmetricTensor<2, 2> &strain, const ArmStress &h_sum) const;
 
     double
-    stress_zz(const SymmetricTensor<2, 2> &strain, const ArmStress &h) const;
+    stress_zz(const SymmetricTensor<2, 2> &strain,
+              const ArmStress             &h_sum) const;
 
-    // Consistent tangent C0 + gamma C1.
+    // Consistent tangent C0 + sum_k gamma_k C_k.
     SymmetricTensor<4, 2>
-    tangent(const StepFactors &factors) const;
+    tangent(const std::vector<StepFactors> &factors) const;
 
-    // D = h : C1^{-1} : h / tau (3D contraction, >= 0).
-    double
-    dissipation_rate(const ArmStress &h) const;
+    // C0 alone (the steady-state solver carries the arms as unknowns).
+    const SymmetricTensor<4, 2> &
+    relaxed_stiffness() const
+    {
+      return C0;
+    }
 
-    // Energy a step dissipates per unit volume: trapezoidal rule on D for a
-    // finite step; for a relaxed step (dt = infinity) all the energy the arm
-    // held, since it relaxes completely.
+    // D_k = h_k : C_k^{-1} : h_k / tau_k (3D contraction, >= 0).
     double
-    dissipated_energy(const ArmStress &old_h,
+    dissipation_rate(unsigned int arm, const ArmStress &h) const;
+
+    // Energy a step dissipates in one arm per unit volume: trapezoidal
+    // rule on D_k for a finite step; for a relaxed step (dt = infinity)
+    // all the energy the arm held, since it relaxes completely.
+    double
+    dissipated_energy(unsigned int     arm,
+                      const ArmStress &old_h,
                       const ArmStress &new_h,
                       double           dt) const;
 
     double
-    arm_energy(const ArmStress &h) const;
+    arm_energy(unsigned int arm, const ArmStress &h) const;
 
-    // The arm stress C1 : (eps - eps_v) of the steady-state formulation,
-    // where the viscous strain eps_v is the unknown. Its out-of-plane
+    // The arm stress C_k : (eps - eps_v,k) of the steady-state formulation,
+    // where the viscous strain eps_v,k is the unknown. Its out-of-plane
     // component is zero (eps_zz = 0 and eps_v relaxes towards eps), so
-    // h_zz = lambda1 tr(eps - eps_v).
+    // h_zz = lambda_k tr(eps - eps_v,k).
     ArmStress
-    arm_stress(const SymmetricTensor<2, 2> &arm_strain) const;
+    arm_stress(unsigned int arm, const SymmetricTensor<2, 2> &arm_strain) const;
 
-    // C1 (in plane) and its Young's modulus Einf - E0.
+    // C_k (in plane), its Young's modulus E_k and relaxation time tau_k.
     const SymmetricTensor<4, 2> &
-    arm_stiffness() const
+    arm_stiffness(const unsigned int arm) const
     {
-      return C1;
+      return arms[arm].C;
     }
     double
-    arm_modulus() const
+    arm_modulus(const unsigned int arm) const
     {
-      return E1;
+      return arms[arm].E;
     }
     double
-    relaxation_time() const
+    relaxation_time(const unsigned int arm) const
     {
-      return tau;
+      return arms[arm].tau;
     }
-
+    double
+    longest_relaxation_time() const;
 
   private:
-    double                E1, nu, tau;
-    double                lambda0, lambda1;
-    SymmetricTensor<4, 2> C0, C1;
+    struct Arm
+    {
+      double                E, tau, lambda;
+      SymmetricTensor<4, 2> C;
+    };
+    double                nu, lambda0;
+    SymmetricTensor<4, 2> C0;
+    std::vector<Arm>      arms;
   };
 } // namespace viscoslide
 

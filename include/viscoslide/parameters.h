@@ -8,6 +8,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <viscoslide/material.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -40,6 +42,9 @@ namespace viscoslide
       double      E0_over_Einf;
       double      poisson_ratio;
       std::string time_constant; // "relaxation" or "retardation"
+      // Arms of the generalised Maxwell solid; empty: one arm, the
+      // standard linear solid.
+      std::vector<PronyTerm> prony_series;
 
       static void
       declare(ParameterHandler &prm);

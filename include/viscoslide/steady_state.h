@@ -51,7 +51,7 @@ namespace viscoslide
 
     SteadyStateSolver(const Parameters::AllParameters         &prm,
                       const Scales                            &scales,
-                      const StandardLinearSolid               &material,
+                      const ViscoelasticSolid                 &material,
                       const InteractionLaw                    &law,
                       const Indenter                          &indenter,
                       const SurfacePostprocessor              &postprocessor,
@@ -161,7 +161,7 @@ namespace viscoslide
 
     const Parameters::AllParameters         &prm;
     const Scales                            &scales;
-    const StandardLinearSolid               &material;
+    const ViscoelasticSolid                 &material;
     const InteractionLaw                    &law;
     const Indenter                          &indenter;
     const SurfacePostprocessor              &postprocessor;
@@ -170,15 +170,13 @@ namespace viscoslide
     MPI_Comm                                 mpi_communicator;
     ConditionalOStream                       pcout;
 
-    // Components: u_x, u_y, then eps_v xx, yy, xy.
+    // Components: u_x, u_y, then eps_v xx, yy, xy of each Maxwell arm.
+    const unsigned int    n_strain_components;
     const FESystem<dim>   fe;
     DoFHandler<dim>       dof_handler;
     const QGauss<dim>     quadrature;
     const QGauss<dim - 1> face_quadrature; // top surface (traction law)
     const QGauss<dim - 1> flux_quadrature; // vertical faces (upwind fluxes)
-    // The viscous-strain rows are scaled by the arm modulus so that both
-    // blocks of the residual are forces.
-    const double strain_row_scale;
     // Local dofs of the first viscous-strain component.
     std::vector<unsigned int> strain_basis;
 

@@ -115,25 +115,26 @@ namespace viscoslide
     , eps(eps)
     , sigma0(16. * dgamma / (9. * std::sqrt(3.) * eps))
     , h(dgamma / sigma0)
-    , w(0.05 * h)
+    , w_rise(0.05 * h)
+    , w_fall(0.25 * h)
   {
   }
 
   double
   Dugdale::traction(const double g) const
   {
-    const double rise = step((g - eps + 0.5 * w) / w),
-                 fall = 1. - step((g - eps - h + 0.5 * w) / w);
+    const double rise = step((g - eps) / w_rise + 0.5),
+                 fall = 1. - step((g - eps - h) / w_fall + 0.5);
     return wall.traction(g) + sigma0 * rise * fall;
   }
 
   double
   Dugdale::derivative(const double g) const
   {
-    const double a = (g - eps + 0.5 * w) / w, b = (g - eps - h + 0.5 * w) / w;
+    const double a = (g - eps) / w_rise + 0.5, b = (g - eps - h) / w_fall + 0.5;
     return wall.derivative(g) +
-           sigma0 * (step_derivative(a) / w * (1. - step(b)) -
-                     step(a) * step_derivative(b) / w);
+           sigma0 * (step_derivative(a) / w_rise * (1. - step(b)) -
+                     step(a) * step_derivative(b) / w_fall);
   }
 
 

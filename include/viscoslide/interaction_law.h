@@ -74,9 +74,13 @@ namespace viscoslide
   // Maugis-Dugdale: a constant attraction sigma0 (the Lennard-Jones peak
   // traction) from the contact up to the range h = dgamma/sigma0, on top of
   // the rounded repulsive branch of the Lennard-Jones law below eps. Newton
-  // needs a continuous law: the attraction rises over [eps - w, eps] and
-  // falls over [eps + h - w, eps + h] by cubic steps (w = 0.05 h), which
-  // keeps the work of separation from the contact at dgamma.
+  // needs a continuous law: the attraction rises by a cubic step of width
+  // 0.05 h centred on eps and falls by one of width 0.25 h centred on
+  // eps + h, which keeps the work of separation from the contact at
+  // dgamma. The fall is the wider: each surface point crosses it during an
+  // approach or a retraction, and Newton's linearisation holds only over a
+  // fraction of the step's width (with 0.05 h a step of 0.1 eps near the
+  // jump-in had to be cut to 1/64).
   class Dugdale : public InteractionLaw
   {
   public:
@@ -90,7 +94,7 @@ namespace viscoslide
 
   private:
     LennardJones wall;
-    double       eps, sigma0, h, w;
+    double       eps, sigma0, h, w_rise, w_fall;
   };
 
   // "lennard-jones", "repulsive" (the repulsive branch alone, rounded to C1

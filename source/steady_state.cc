@@ -398,13 +398,14 @@ namespace viscoslide
     // Per strain component: the arm's relaxation length V tau_k and its
     // row scale E_k.
     const unsigned int  n_arms = material.n_arms();
-    std::vector<double> ell(n_strain_components), k(n_strain_components);
+    std::vector<double> ell(n_strain_components),
+      row_scale(n_strain_components);
     for (unsigned int c = 0; c < n_strain_components; ++c)
       {
         const unsigned int arm = c / components_per_arm;
         ell[c] =
           V_hat * scales.eps / scales.tau_ref * material.relaxation_time(arm);
-        k[c] = material.arm_modulus(arm);
+        row_scale[c] = material.arm_modulus(arm);
       }
     const SymmetricTensor<4, 2> &C0    = material.relaxed_stiffness();
     SymmetricTensor<4, 2>        C_sum = material.arm_stiffness(0);
@@ -465,12 +466,13 @@ namespace viscoslide
                 if (component[i] == first_strain_component + c)
                   {
                     const double w = mine.shape_value(i, q);
-                    cell_rhs(i) += k[c] * ell[c] * e_face[q] * w * JxW;
+                    cell_rhs(i) += row_scale[c] * ell[c] * e_face[q] * w * JxW;
                     if (with_matrix)
                       for (unsigned int j = 0; j < n; ++j)
                         if (component[j] == component[i])
-                          flux_matrix(i, j) -=
-                            k[c] * ell[c] * theirs.shape_value(j, q) * w * JxW;
+                          flux_matrix(i, j) -= row_scale[c] * ell[c] *
+                                               theirs.shape_value(j, q) * w *
+                                               JxW;
                   }
             }
         }
@@ -569,7 +571,7 @@ namespace viscoslide
                     const double       ec =
                       strain_component(eps_v[c / components_per_arm], cc);
                     cell_rhs(i) -=
-                      k[c] *
+                      row_scale[c] *
                       (ell[c] * ec * phi_x[i] +
                        (ec - strain_component(strain[q], cc)) * phi[i]) *
                       JxW;
@@ -578,10 +580,10 @@ namespace viscoslide
                         {
                           if (component[j] < first_strain_component)
                             cell_matrix(i, j) -=
-                              k[c] * strain_component(grad_phi[j], cc) *
+                              row_scale[c] * strain_component(grad_phi[j], cc) *
                               phi[i] * JxW;
                           else if (component[j] == component[i])
-                            cell_matrix(i, j) += k[c] *
+                            cell_matrix(i, j) += row_scale[c] *
                                                  (ell[c] * phi_x[i] + phi[i]) *
                                                  phi[j] * JxW;
                         }
@@ -651,12 +653,12 @@ namespace viscoslide
                               const double w   = face_values.shape_value(i, q);
                               const double JxW = face_values.JxW(q);
                               cell_rhs(i) -=
-                                k[c] * ell[c] * e_face[q] * w * JxW;
+                                row_scale[c] * ell[c] * e_face[q] * w * JxW;
                               if (with_matrix)
                                 for (unsigned int j = 0; j < n; ++j)
                                   if (component[j] == component[i])
                                     cell_matrix(i, j) +=
-                                      k[c] * ell[c] *
+                                      row_scale[c] * ell[c] *
                                       face_values.shape_value(j, q) * w * JxW;
                             }
                     }

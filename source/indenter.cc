@@ -5,9 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace viscoslide
@@ -143,56 +141,16 @@ namespace viscoslide
 
   TabulatedIndenter::TabulatedIndenter(const std::string &filename)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw ExcInvalidInput(entry("Profile file", filename) +
-                            ": cannot read the file");
-    std::vector<double>           x, h;
-    std::map<std::string, size_t> column;
-    std::string                   line;
-    unsigned int                  line_number = 0;
-    while (std::getline(in, line))
-      {
-        ++line_number;
-        if (line.empty() || line[0] == '#')
-          continue;
-        const auto words =
-          Utilities::split_string_list(Utilities::trim(line), ',');
-        if (column.empty())
-          {
-            for (size_t i = 0; i < words.size(); ++i)
-              column[words[i]] = i;
-            if (column.count("x_over_eps") == 0 ||
-                column.count("h_over_eps") == 0)
-              throw ExcInvalidInput(
-                entry("Profile file", filename) +
-                ": the header needs the columns x_over_eps and h_over_eps");
-            continue;
-          }
-        const auto at = [&](const std::string &name) {
-          const size_t i = column[name];
-          double       v = std::numeric_limits<double>::quiet_NaN();
-          try
-            {
-              if (i < words.size())
-                v = Utilities::string_to_double(words[i]);
-            }
-          catch (...)
-            {
-            }
-          if (!std::isfinite(v))
-            throw ExcInvalidInput(entry("Profile file", filename) +
-                                  ": no number in column " + name +
-                                  " of line " + std::to_string(line_number));
-          return v;
-        };
-        x.push_back(at("x_over_eps"));
-        h.push_back(at("h_over_eps"));
-        if (x.size() > 1 && !(x.back() > x[x.size() - 2]))
-          throw ExcInvalidInput(entry("Profile file", filename) +
-                                ": x_over_eps must increase (line " +
-                                std::to_string(line_number) + ")");
-      }
+    const auto columns =
+      Parameters::read_csv_columns(filename,
+                                   {"x_over_eps", "h_over_eps"},
+                                   entry("Profile file", filename));
+    const std::vector<double> &x = columns[0], &h = columns[1];
+    for (size_t i = 1; i < x.size(); ++i)
+      if (!(x[i] > x[i - 1]))
+        throw ExcInvalidInput(entry("Profile file", filename) +
+                              ": x_over_eps must increase (data row " +
+                              std::to_string(i + 1) + ")");
     if (x.size() < 2)
       throw ExcInvalidInput(entry("Profile file", filename) +
                             ": needs at least two rows of data");

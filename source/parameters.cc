@@ -92,46 +92,67 @@ namespace viscoslide
       std::vector<PronyTerm>
       prony_series_from_file(const std::string &filename)
       {
-        const std::string name = "'Material/Prony file' = " + filename;
-        std::ifstream     in(filename);
-        require(static_cast<bool>(in), name + ": cannot read the file");
+        const auto columns =
+          read_csv_columns(filename,
+                           {"weight", "tau_over_tau"},
+                           "'Material/Prony file' = " + filename);
         std::vector<PronyTerm> series;
-        int                    weight_column = -1, time_column = -1;
-        std::string            line;
-        for (unsigned int line_number = 1; std::getline(in, line);
-             ++line_number)
-          {
-            line = Utilities::trim(line);
-            if (line.empty() || line[0] == '#')
-              continue;
-            const auto words = Utilities::split_string_list(line, ',');
-            if (weight_column < 0)
-              {
-                for (unsigned int i = 0; i < words.size(); ++i)
-                  {
-                    if (words[i] == "weight")
-                      weight_column = i;
-                    if (words[i] == "tau_over_tau")
-                      time_column = i;
-                  }
-                require(weight_column >= 0 && time_column >= 0,
-                        name + ": the header needs the columns weight and "
-                               "tau_over_tau");
-                continue;
-              }
-            const std::string where =
-              name + ", line " + std::to_string(line_number);
-            require(static_cast<int>(words.size()) >
-                      std::max(weight_column, time_column),
-                    where + ": too few columns");
-            series.push_back(prony_term(to_number(words[weight_column]),
-                                        to_number(words[time_column]),
-                                        where));
-          }
-        require(!series.empty(), name + ": no arm in the file");
+        for (unsigned int k = 0; k < columns[0].size(); ++k)
+          series.push_back(prony_term(columns[0][k],
+                                      columns[1][k],
+                                      "'Material/Prony file' = " + filename +
+                                        ", arm " + std::to_string(k + 1)));
+        require(!series.empty(),
+                "'Material/Prony file' = " + filename + ": no arm in the file");
         return series;
       }
     } // namespace
+
+
+    std::vector<std::vector<double>>
+    read_csv_columns(const std::string              &filename,
+                     const std::vector<std::string> &names,
+                     const std::string              &what)
+    {
+      std::ifstream in(filename);
+      require(static_cast<bool>(in), what + ": cannot read the file");
+      std::vector<int>                 column;
+      std::vector<std::vector<double>> values(names.size());
+      std::string                      line;
+      for (unsigned int line_number = 1; std::getline(in, line); ++line_number)
+        {
+          line = Utilities::trim(line);
+          if (line.empty() || line[0] == '#')
+            continue;
+          const auto words = Utilities::split_string_list(line, ',');
+          if (column.empty())
+            {
+              std::string header;
+              for (const auto &name : names)
+                {
+                  const auto i = std::find(words.begin(), words.end(), name);
+                  column.push_back(i == words.end() ? -1 : i - words.begin());
+                  header += (header.empty() ? "" : ", ") + name;
+                }
+              require(std::find(column.begin(), column.end(), -1) ==
+                        column.end(),
+                      what + ": the header needs the columns " + header);
+              continue;
+            }
+          for (unsigned int c = 0; c < names.size(); ++c)
+            {
+              const double v = column[c] < static_cast<int>(words.size())
+                                 ? to_number(words[column[c]])
+                                 : std::numeric_limits<double>::quiet_NaN();
+              require(std::isfinite(v),
+                      what + ": no number in column " + names[c] + " of line " +
+                        std::to_string(line_number));
+              values[c].push_back(v);
+            }
+        }
+      require(!column.empty(), what + ": no header line");
+      return values;
+    }
 
 
     void

@@ -241,6 +241,16 @@ namespace viscoslide
       {
       }
     };
+
+    // The columns `names` of a CSV input file (a header line naming the
+    // columns, then one row per line; lines starting with # are comments),
+    // every entry a finite number. The messages of ExcInvalidInput start
+    // with `what`, e.g. "'Material/Prony file' = spectrum.csv", and name the
+    // line.
+    std::vector<std::vector<double>>
+    read_csv_columns(const std::string              &filename,
+                     const std::vector<std::string> &names,
+                     const std::string              &what);
   } // namespace Parameters
 
 

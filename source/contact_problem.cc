@@ -368,8 +368,7 @@ namespace viscoslide
                     arm_stress_at(history_values, k, q),
                     strain[q] - old_strain[q],
                     factors[k]);
-                  h.in_plane += h_k.in_plane;
-                  h.zz += h_k.zz;
+                  h += h_k;
                 }
               const SymmetricTensor<2, dim> sigma =
                 material.stress(strain[q], h);
@@ -1130,8 +1129,7 @@ namespace viscoslide
               for (unsigned int k = 0; k < material.n_arms(); ++k)
                 {
                   const ArmStress h_k = arm_stress_at(values, k, q);
-                  h.in_plane += h_k.in_plane;
-                  h.zz += h_k.zz;
+                  h += h_k;
                   rate += material.dissipation_rate(k, h_k);
                 }
               const auto sigma = material.stress(strain[q], h);

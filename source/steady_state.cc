@@ -143,8 +143,7 @@ namespace viscoslide
               {
                 const auto h_k =
                   material.arm_stress(k, strain - viscous_strain(v, k));
-                h.in_plane += h_k.in_plane;
-                h.zz += h_k.zz;
+                h += h_k;
                 rate += material.dissipation_rate(k, h_k);
               }
             const auto sigma = material.stress(strain, h);

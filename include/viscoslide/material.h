@@ -21,6 +21,15 @@ namespace viscoslide
   {
     SymmetricTensor<2, 2> in_plane;
     double                zz = 0.;
+
+    // Arms in parallel: their stresses add.
+    ArmStress &
+    operator+=(const ArmStress &other)
+    {
+      in_plane += other.in_plane;
+      zz += other.zz;
+      return *this;
+    }
   };
 
   // One term of the Prony series as the user gives it: its share of

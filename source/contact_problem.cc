@@ -1634,6 +1634,27 @@ namespace viscoslide
           << ", mu_energy = " << std::abs(dissipation_rate / V / Fn)
           << ", L_hat = " << q.contact_length / scales.R
           << ", F_n_hat = " << Fn / scales.force << std::endl;
+    // The traction law is conservative, so in a steady state the work of
+    // the x force on the indenter equals the dissipation (physics.md, check
+    // 4). Said at every row because a transient can pass its window test
+    // while it still carries the approach (doc/steady_state.md, V_hat 100),
+    // and a mesh can miss V tau; both show here first. Below mu_energy
+    // 1e-3 (elastic limits) the ratio is noise.
+    if (std::abs(dissipation_rate / V / Fn) > 1e-3)
+      {
+        const double       balance = q.profile_force * V / dissipation_rate - 1;
+        std::ostringstream percent;
+        percent << std::showpos << std::fixed << std::setprecision(2)
+                << 100 * balance << " %";
+        pcout << "energy balance: x force on the indenter against "
+                 "dissipation / V: "
+              << percent.str()
+              << (std::abs(balance) > 0.01
+                    ? " (more than 1 %: not steady yet, or V tau and the "
+                      "contact edges not resolved by the mesh)"
+                    : "")
+              << std::endl;
+      }
   }
 
 

@@ -289,6 +289,7 @@ namespace viscoslide
     this->k    = k;
     this->name = name;
     ++n_begun;
+    first_report_of_case = true;
   }
 
   namespace
@@ -314,15 +315,21 @@ namespace viscoslide
     const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
-    const double done =
-      (n_begun > 0 ? n_begun - 1 : 0) + std::clamp(case_fraction, 0., 1.);
+    const double fraction = std::clamp(case_fraction, 0., 1.);
+    if (first_report_of_case)
+      {
+        resumed += fraction;
+        first_report_of_case = false;
+      }
+    const double done = (n_begun > 0 ? n_begun - 1 : 0) + fraction;
     std::ostringstream s;
     if (n_cases > 1)
       s << "case " << k << "/" << n_cases << " " << name << ": ";
     s << std::fixed << std::setprecision(0) << 100 * case_fraction << " %, "
       << duration(elapsed) << " elapsed";
-    if (done > 0.02)
-      s << ", ~" << duration(elapsed / done * (n_to_run - done)) << " left";
+    if (done - resumed > 0.02)
+      s << ", ~" << duration(elapsed / (done - resumed) * (n_to_run - done))
+        << " left";
     return s.str();
   }
 

@@ -778,7 +778,10 @@ namespace viscoslide
                         Patterns::Double(),
                         "Sliding distance (eps) over which steady state is "
                         "judged and its values averaged. 0: automatic, "
-                        "max(L, 2 min(V tau_c, 4 L)).");
+                        "max(L, 2 min(V tau_c, 4 L)); the cap at 4 L can "
+                        "accept a state a few % from steady when V tau_c "
+                        "is much longer than L (doc/steady_state.md): set "
+                        "V tau_c or more for 1 %.");
       prm.declare_entry(
         "Solver",
         "transient",

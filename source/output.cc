@@ -321,7 +321,7 @@ namespace viscoslide
         resumed += fraction;
         first_report_of_case = false;
       }
-    const double done = (n_begun > 0 ? n_begun - 1 : 0) + fraction;
+    const double       done = (n_begun > 0 ? n_begun - 1 : 0) + fraction;
     std::ostringstream s;
     if (n_cases > 1)
       s << "case " << k << "/" << n_cases << " " << name << ": ";

@@ -113,14 +113,14 @@ namespace viscoslide
     report(double case_fraction) const;
 
   private:
-    unsigned int                          n_cases, n_to_run;
-    unsigned int                          k       = 0;
-    unsigned int                          n_begun = 0;
-    std::string                           name;
+    unsigned int n_cases, n_to_run;
+    unsigned int k       = 0;
+    unsigned int n_begun = 0;
+    std::string  name;
     // Case fractions done before this invocation (a resumed case's first
     // report), kept out of the rate.
-    mutable double resumed = 0;
-    mutable bool   first_report_of_case = true;
+    mutable double                        resumed              = 0;
+    mutable bool                          first_report_of_case = true;
     std::chrono::steady_clock::time_point start;
   };
 

@@ -158,8 +158,8 @@ namespace viscoslide
 
 
   ContactProblem::ContactProblem(const Parameters::AllParameters &parameters,
-                                 MPI_Comm        mpi_communicator,
-                                 const Progress *progress)
+                                 MPI_Comm  mpi_communicator,
+                                 Progress *progress)
     : prm(parameters)
     , mpi_communicator(mpi_communicator)
     , pcout(std::cout,
@@ -1344,6 +1344,8 @@ namespace viscoslide
     const double dt  = ds / V;
     slide_distance   = plan.distance;
     slid             = committed.s - plan.s0;
+    if (resumed && progress != nullptr)
+      progress->resume_case(slid / slide_distance);
     pcout << (resumed ? "Resuming sliding" : "Sliding")
           << " at V_hat = " << prm.sliding.speed << " under "
           << prm.sliding.control << " control: up to " << plan.distance
@@ -1608,7 +1610,9 @@ namespace viscoslide
   {
     const double V  = V_hat * scales.eps / scales.tau_ref;
     const double Fn = q.normal_force, Ft = q.tangential_force;
-    using F = CsvTable;
+    const double mu        = std::abs(Ft / Fn);
+    const double mu_energy = std::abs(dissipation_rate / V / Fn);
+    using F                = CsvTable;
     if (!steady_state_table)
       steady_state_table =
         std::make_unique<CsvTable>(writer.path("steady_state.csv"),
@@ -1626,8 +1630,8 @@ namespace viscoslide
                                  F::format(Fn / scales.force),
                                  F::format(Ft / scales.force),
                                  F::format(q.profile_force / scales.force),
-                                 F::format(std::abs(Ft / Fn)),
-                                 F::format(std::abs(dissipation_rate / V / Fn)),
+                                 F::format(mu),
+                                 F::format(mu_energy),
                                  F::format(q.contact_length / scales.R),
                                  F::format(dissipation_rate * scales.tau_ref /
                                            (scales.force * scales.eps)),
@@ -1635,8 +1639,7 @@ namespace viscoslide
                                  F::format(distance),
                                  prm.material.time_constant,
                                  solver});
-    pcout << "mu = " << std::abs(Ft / Fn)
-          << ", mu_energy = " << std::abs(dissipation_rate / V / Fn)
+    pcout << "mu = " << mu << ", mu_energy = " << mu_energy
           << ", L_hat = " << q.contact_length / scales.R
           << ", F_n_hat = " << Fn / scales.force << std::endl;
     // The traction law is conservative, so in a steady state the work of
@@ -1645,7 +1648,7 @@ namespace viscoslide
     // while it still carries the approach (doc/steady_state.md, V_hat 100),
     // and a mesh can miss V tau; both show here first. Below mu_energy
     // 1e-3 (elastic limits) the ratio is noise.
-    if (std::abs(dissipation_rate / V / Fn) > 1e-3)
+    if (mu_energy > 1e-3)
       {
         const double       balance = q.profile_force * V / dissipation_rate - 1;
         std::ostringstream percent;

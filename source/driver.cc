@@ -323,10 +323,10 @@ namespace viscoslide
     // Runs one case; returns "" or the reason it failed. Failures of the
     // solver are collective, so every process returns the same.
     std::string
-    run_case(const Case     &c,
-             const Progress &progress,
-             MPI_Comm        comm,
-             const bool      resume = false)
+    run_case(const Case &c,
+             Progress   &progress,
+             MPI_Comm    comm,
+             const bool  resume = false)
     {
       try
         {
@@ -444,7 +444,7 @@ namespace viscoslide
           std::cout << version_string() << ", "
                     << Utilities::MPI::n_mpi_processes(comm)
                     << " MPI process(es)\n";
-        const Progress    progress(1, 1);
+        Progress          progress(1, 1);
         const std::string failure = run_case(c, progress, comm, resume);
         if (root)
           try

@@ -289,7 +289,12 @@ namespace viscoslide
     this->k    = k;
     this->name = name;
     ++n_begun;
-    first_report_of_case = true;
+  }
+
+  void
+  Progress::resume_case(const double fraction_done)
+  {
+    done_before += std::clamp(fraction_done, 0., 1.);
   }
 
   namespace
@@ -315,20 +320,15 @@ namespace viscoslide
     const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
-    const double fraction = std::clamp(case_fraction, 0., 1.);
-    if (first_report_of_case)
-      {
-        resumed += fraction;
-        first_report_of_case = false;
-      }
-    const double       done = (n_begun > 0 ? n_begun - 1 : 0) + fraction;
+    const double done =
+      (n_begun > 0 ? n_begun - 1 : 0) + std::clamp(case_fraction, 0., 1.);
     std::ostringstream s;
     if (n_cases > 1)
       s << "case " << k << "/" << n_cases << " " << name << ": ";
     s << std::fixed << std::setprecision(0) << 100 * case_fraction << " %, "
       << duration(elapsed) << " elapsed";
-    if (done - resumed > 0.02)
-      s << ", ~" << duration(elapsed / (done - resumed) * (n_to_run - done))
+    if (done - done_before > 0.02)
+      s << ", ~" << duration(elapsed / (done - done_before) * (n_to_run - done))
         << " left";
     return s.str();
   }

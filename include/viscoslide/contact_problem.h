@@ -54,10 +54,11 @@ namespace viscoslide
     static constexpr unsigned int dim = 2;
 
     // `progress`, if given, is appended to the per-step report lines (the
-    // sweep driver's case k of n and time estimate).
+    // sweep driver's case k of n and time estimate); a resumed run tells it
+    // how much of the case its checkpoint holds.
     ContactProblem(const Parameters::AllParameters &parameters,
                    MPI_Comm                         mpi_communicator,
-                   const Progress                  *progress = nullptr);
+                   Progress                        *progress = nullptr);
 
     // Approach, optional hold, optional retraction; writes all outputs.
     // With `resume`, continues the transient sliding phase from the
@@ -251,7 +252,7 @@ namespace viscoslide
     OutputWriter              writer;
     std::unique_ptr<CsvTable> approach_table;
 
-    const Progress *progress;
+    Progress *progress;
     // Sliding distance of the transient run so far and its maximum, for
     // the progress report.
     double slid = 0., slide_distance = 0.;

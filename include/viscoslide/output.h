@@ -108,19 +108,21 @@ namespace viscoslide
     void
     start_case(unsigned int k, const std::string &name);
 
+    // The current case continues from a checkpoint with this fraction
+    // already done, which the time estimate leaves out of the rate.
+    void
+    resume_case(double fraction_done);
+
     // E.g. "case 3/12 muT1_t100: 26 %, 5 min elapsed, ~14 min left".
     std::string
     report(double case_fraction) const;
 
   private:
-    unsigned int n_cases, n_to_run;
-    unsigned int k       = 0;
-    unsigned int n_begun = 0;
-    std::string  name;
-    // Case fractions done before this invocation (a resumed case's first
-    // report), kept out of the rate.
-    mutable double                        resumed              = 0;
-    mutable bool                          first_report_of_case = true;
+    unsigned int                          n_cases, n_to_run;
+    unsigned int                          k       = 0;
+    unsigned int                          n_begun = 0;
+    std::string                           name;
+    double                                done_before = 0;
     std::chrono::steady_clock::time_point start;
   };
 

@@ -4,6 +4,7 @@
 #include <viscoslide/driver.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
+#include <viscoslide/steady_state_table.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -106,7 +107,10 @@ namespace viscoslide
       add(words(sw.loads), "F", [](const std::string &v) {
         return std::vector<Setting>{{"Loading", "Target load", v}};
       });
-      add(sw.controls, "", [](const std::string &v) {
+      std::vector<std::string> controls;
+      for (const auto c : sw.controls)
+        controls.push_back(Parameters::to_string(c));
+      add(controls, "", [](const std::string &v) {
         return std::vector<Setting>{{"Sliding", "Control", v}};
       });
       add(words(sw.spring_stiffnesses), "k", [](const std::string &v) {
@@ -115,7 +119,8 @@ namespace viscoslide
       add(sw.shapes, "", [](const std::string &v) {
         return std::vector<Setting>{{"Indenter", "Shape", v}};
       });
-      if (p.sliding.solver == "transient" && p.sliding.speeds.size() > 1)
+      if (p.sliding.solver == Parameters::SlidingSolver::transient &&
+          p.sliding.speeds.size() > 1)
         add(words(p.sliding.speeds), "V", [](const std::string &v) {
           return std::vector<Setting>{{"Sliding", "Sliding speed", v}};
         });
@@ -255,7 +260,7 @@ namespace viscoslide
     void
     write_sweep_table(const fs::path &directory, const std::vector<Case> &cases)
     {
-      const auto         columns = ContactProblem::steady_state_columns();
+      const auto         columns = SteadyStateTable::columns();
       std::ostringstream out;
       out << "# " << version_string() << "; sweep of " << cases.size()
           << " cases, one folder each\ncase,status,reason";
@@ -273,16 +278,17 @@ namespace viscoslide
               // What is known of the case without a result.
               const auto &p = c.parameters;
               rows.push_back(
-                {{"control", p.sliding.control},
+                {{"control", Parameters::to_string(p.sliding.control)},
                  {"mu_T", CsvTable::format(p.adhesion.tabor_parameter)},
                  {"R_hat", CsvTable::format(p.adhesion.R_over_eps)},
                  {"t_hat",
-                  p.geometry.substrate == "layer"
+                  p.geometry.substrate == Parameters::Substrate::layer
                     ? CsvTable::format(p.geometry.layer_thickness)
                     : std::string("half-plane")},
                  {"steady", "0"},
-                 {"time_constant", p.material.time_constant},
-                 {"solver", p.sliding.solver}});
+                 {"time_constant",
+                  Parameters::to_string(p.material.time_constant)},
+                 {"solver", Parameters::to_string(p.sliding.solver)}});
             }
           for (auto &row : rows)
             {

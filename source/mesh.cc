@@ -78,4 +78,21 @@ namespace viscoslide
     return Utilities::MPI::max(changes ? 1 : 0,
                                triangulation.get_communicator()) != 0;
   }
+
+
+  int
+  resolve_on_adapted_meshes(const unsigned int           max_cycles,
+                            const std::function<bool()> &adapt_mesh,
+                            const std::function<int()>  &solve)
+  {
+    int its = 0;
+    for (unsigned int cycle = 0; cycle < max_cycles && adapt_mesh(); ++cycle)
+      {
+        const int more = solve();
+        if (more < 0)
+          return -1;
+        its += more;
+      }
+    return its;
+  }
 } // namespace viscoslide

@@ -38,7 +38,7 @@ namespace viscoslide
                      const std::vector<std::string> &columns,
                      const std::string              &comment,
                      MPI_Comm                        comm)
-    : n_columns(columns.size())
+    : columns(columns)
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -54,13 +54,25 @@ namespace viscoslide
   }
 
   void
-  CsvTable::add_row(const std::vector<std::string> &values)
+  CsvTable::add_row(const Row &row)
   {
-    AssertDimension(values.size(), n_columns);
+    // Checked in every build: a row that does not name the table's columns
+    // in their order would silently shift values between columns.
+    bool matches = row.size() == columns.size();
+    for (std::size_t i = 0; matches && i < row.size(); ++i)
+      matches = row[i].first == columns[i];
+    if (!matches)
+      {
+        std::string names;
+        for (const auto &cell : row)
+          names += (names.empty() ? "" : ",") + cell.first;
+        throw std::logic_error("a row with the columns " + names +
+                               " was added to a table whose columns differ");
+      }
     if (!file)
       return;
-    for (std::size_t i = 0; i < values.size(); ++i)
-      *file << (i ? "," : "") << values[i];
+    for (std::size_t i = 0; i < row.size(); ++i)
+      *file << (i ? "," : "") << row[i].second;
     *file << std::endl;
     if (!*file)
       throw std::runtime_error("writing a row of a CSV file failed (disk "
@@ -71,7 +83,7 @@ namespace viscoslide
                      const std::vector<std::string> &columns,
                      const std::size_t               keep_rows,
                      MPI_Comm                        comm)
-    : n_columns(columns.size())
+    : columns(columns)
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -116,9 +128,9 @@ namespace viscoslide
   }
 
 
-  OutputWriter::OutputWriter(const std::string &directory,
-                             MPI_Comm           comm,
-                             const std::string &format)
+  OutputWriter::OutputWriter(const std::string            &directory,
+                             MPI_Comm                      comm,
+                             const Parameters::FieldFormat format)
     : directory(directory)
     , comm(comm)
     , format(format)
@@ -176,7 +188,7 @@ namespace viscoslide
     std::ostringstream collection;
     try
       {
-        if (format == "vtu")
+        if (format == Parameters::FieldFormat::vtu)
           {
             entries.emplace_back(time,
                                  data_out.write_vtu_with_pvtu_record(
@@ -221,7 +233,9 @@ namespace viscoslide
                                  "are complete");
       }
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_atomically(path(name + (format == "vtu" ? ".pvd" : ".xdmf")),
+      write_atomically(path(name + (format == Parameters::FieldFormat::vtu
+                                      ? ".pvd"
+                                      : ".xdmf")),
                        collection.str());
   }
   template void
@@ -242,12 +256,13 @@ namespace viscoslide
   {
     auto &entries = records[name];
     entries.clear();
-    std::ifstream     in(path(name + (format == "vtu" ? ".pvd" : ".xdmf")));
+    std::ifstream in(
+      path(name + (format == Parameters::FieldFormat::vtu ? ".pvd" : ".xdmf")));
     std::stringstream text;
     text << in.rdbuf();
     const std::string all = text.str();
     std::smatch       m;
-    if (format == "vtu")
+    if (format == Parameters::FieldFormat::vtu)
       {
         const std::regex dataset("timestep=\"([^\"]*)\"[^\n]*file=\"(" + name +
                                  "_([0-9]+)\\.pvtu)\"");

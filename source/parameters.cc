@@ -42,7 +42,6 @@ namespace viscoslide
       // The choices an entry and its Sweep list share.
       const std::string shape_choices =
         "parabola|circle|flat punch|power law|sinusoid|expression|table";
-      const std::string control_choices = "displacement|force|spring";
 
       std::string
       entry(const std::string &section,
@@ -109,6 +108,58 @@ namespace viscoslide
     } // namespace
 
 
+#define VISCOSLIDE_CHOICE_NAMES(Choice, ...)                  \
+  template <>                                                 \
+  const std::vector<std::string> &choice_names<Choice>()      \
+  {                                                           \
+    static const std::vector<std::string> names{__VA_ARGS__}; \
+    return names;                                             \
+  }
+    VISCOSLIDE_CHOICE_NAMES(Verbosity, "quiet", "normal", "verbose")
+    VISCOSLIDE_CHOICE_NAMES(FieldFormat, "vtu", "hdf5")
+    VISCOSLIDE_CHOICE_NAMES(TimeConstant, "relaxation", "retardation")
+    VISCOSLIDE_CHOICE_NAMES(Substrate, "half-plane", "layer")
+    VISCOSLIDE_CHOICE_NAMES(Control, "displacement", "force", "spring")
+    VISCOSLIDE_CHOICE_NAMES(SlidingSolver, "transient", "steady-state")
+    VISCOSLIDE_CHOICE_NAMES(LinearSolver, "automatic", "direct", "iterative")
+#undef VISCOSLIDE_CHOICE_NAMES
+
+    template <typename Choice>
+    std::string
+    choice_pattern()
+    {
+      std::string pattern;
+      for (const auto &name : choice_names<Choice>())
+        pattern += (pattern.empty() ? "" : "|") + name;
+      return pattern;
+    }
+
+    template <typename Choice>
+    Choice
+    parse_choice(const std::string &word, const std::string &entry)
+    {
+      const auto &names = choice_names<Choice>();
+      for (unsigned int k = 0; k < names.size(); ++k)
+        if (names[k] == word)
+          return static_cast<Choice>(k);
+      throw ExcInvalidInput("'" + entry + "' = " + word + " is not one of " +
+                            choice_pattern<Choice>());
+    }
+
+#define VISCOSLIDE_INSTANTIATE_CHOICE(Choice)                    \
+  template std::string choice_pattern<Choice>();                 \
+  template Choice      parse_choice<Choice>(const std::string &, \
+                                       const std::string &);
+    VISCOSLIDE_INSTANTIATE_CHOICE(Verbosity)
+    VISCOSLIDE_INSTANTIATE_CHOICE(FieldFormat)
+    VISCOSLIDE_INSTANTIATE_CHOICE(TimeConstant)
+    VISCOSLIDE_INSTANTIATE_CHOICE(Substrate)
+    VISCOSLIDE_INSTANTIATE_CHOICE(Control)
+    VISCOSLIDE_INSTANTIATE_CHOICE(SlidingSolver)
+    VISCOSLIDE_INSTANTIATE_CHOICE(LinearSolver)
+#undef VISCOSLIDE_INSTANTIATE_CHOICE
+
+
     std::vector<std::vector<double>>
     read_csv_columns(const std::string              &filename,
                      const std::vector<std::string> &names,
@@ -171,7 +222,7 @@ namespace viscoslide
                         "--overwrite.");
       prm.declare_entry("Verbosity",
                         "normal",
-                        Patterns::Selection("quiet|normal|verbose"),
+                        Patterns::Selection(choice_pattern<Verbosity>()),
                         "'quiet': only the start and end of each case and "
                         "errors. 'normal': one line per step (approach) or "
                         "per speed (steady-state solver) with the progress "
@@ -185,7 +236,7 @@ namespace viscoslide
       prm.declare_entry(
         "Field format",
         "vtu",
-        Patterns::Selection("vtu|hdf5"),
+        Patterns::Selection(choice_pattern<FieldFormat>()),
         "'vtu': per step one .vtu per process and a .pvtu, listed in NAME.pvd "
         "(ParaView, VisIt). 'hdf5': per step one NAME_NNNNN.h5 written "
         "by all processes together (MPI-IO), listed in NAME.xdmf (ParaView, "
@@ -217,11 +268,13 @@ namespace viscoslide
     Output::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      directory        = prm.get("Output directory");
-      verbosity        = prm.get("Verbosity");
+      directory = prm.get("Output directory");
+      verbosity =
+        parse_choice<Verbosity>(prm.get("Verbosity"), "Output/Verbosity");
       write_fields     = prm.get_bool("Write fields");
       fields_every     = prm.get_integer("Fields every");
-      field_format     = prm.get("Field format");
+      field_format     = parse_choice<FieldFormat>(prm.get("Field format"),
+                                               "Output/Field format");
       profile_every    = prm.get_integer("Surface profile every");
       checkpoint_every = prm.get_integer("Checkpoint every");
       prm.leave_subsection();
@@ -250,7 +303,7 @@ namespace viscoslide
       prm.declare_entry(
         "Time constant",
         "relaxation",
-        Patterns::Selection("relaxation|retardation"),
+        Patterns::Selection(choice_pattern<TimeConstant>()),
         "Which time constant tau makes V_hat = V tau/eps and time_over_tau "
         "dimensionless. 'relaxation': tau is the relaxation time of the "
         "Maxwell arm, E(t) = E0 + (Einf - E0) exp(-t/tau) (the paper's "
@@ -292,9 +345,10 @@ namespace viscoslide
     Material::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      E0_over_Einf              = prm.get_double("E0 over Einf");
-      poisson_ratio             = prm.get_double("Poisson ratio");
-      time_constant             = prm.get("Time constant");
+      E0_over_Einf  = prm.get_double("E0 over Einf");
+      poisson_ratio = prm.get_double("Poisson ratio");
+      time_constant = parse_choice<TimeConstant>(prm.get("Time constant"),
+                                                 "Material/Time constant");
       const std::string weights = prm.get("Prony weights"),
                         times   = prm.get("Prony relaxation times"),
                         file    = prm.get("Prony file");
@@ -305,7 +359,8 @@ namespace viscoslide
               "series one way");
       prony_series = file.empty() ? prony_series_from_lists(weights, times)
                                   : prony_series_from_file(file);
-      require(prony_series.size() <= 1 || time_constant == "relaxation",
+      require(prony_series.size() <= 1 ||
+                time_constant == TimeConstant::relaxation,
               "'Material/Time constant' = retardation is defined for one "
               "Maxwell arm only; a Prony series needs relaxation");
       require(E0_over_Einf > 0 && E0_over_Einf <= 1,
@@ -499,7 +554,7 @@ namespace viscoslide
       prm.enter_subsection("Geometry");
       prm.declare_entry("Substrate",
                         "half-plane",
-                        Patterns::Selection("half-plane|layer"),
+                        Patterns::Selection(choice_pattern<Substrate>()),
                         "'half-plane': a block of Domain width x Domain "
                         "height, large against the contact, base fixed. "
                         "'layer': a layer of Layer thickness bonded to a "
@@ -526,7 +581,8 @@ namespace viscoslide
     Geometry::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
-      substrate       = prm.get("Substrate");
+      substrate =
+        parse_choice<Substrate>(prm.get("Substrate"), "Geometry/Substrate");
       layer_thickness = prm.get_double("Layer thickness");
       domain_width    = prm.get_double("Domain width");
       domain_height   = prm.get_double("Domain height");
@@ -731,7 +787,7 @@ namespace viscoslide
       prm.declare_entry(
         "Control",
         "displacement",
-        Patterns::Selection(control_choices),
+        Patterns::Selection(choice_pattern<Control>()),
         "'displacement': delta stays at its value after the approach and Fn "
         "is an output. 'force': Fn stays at the value reached at the end of "
         "the approach and delta is an unknown solved with the displacements. "
@@ -785,7 +841,7 @@ namespace viscoslide
       prm.declare_entry(
         "Solver",
         "transient",
-        Patterns::Selection("transient|steady-state"),
+        Patterns::Selection(choice_pattern<SlidingSolver>()),
         "'transient': the moving-profile time stepping of the paper until "
         "steady state. 'steady-state': the steady sliding state solved "
         "directly in the frame of the indenter (doc/steady_state.md), with "
@@ -839,14 +895,14 @@ namespace viscoslide
                     " must not be negative");
           speeds.push_back(V);
         }
-      speed                 = speeds.back();
-      control               = prm.get("Control");
-      spring_stiffness      = prm.get_double("Spring stiffness");
-      increment             = prm.get_double("Sliding increment");
-      max_distance          = prm.get_double("Maximum sliding distance");
-      steady_tolerance      = prm.get_double("Steady-state tolerance");
-      steady_window         = prm.get_double("Steady-state window");
-      solver                = prm.get("Solver");
+      speed   = speeds.back();
+      control = parse_choice<Control>(prm.get("Control"), "Sliding/Control");
+      spring_stiffness = prm.get_double("Spring stiffness");
+      increment        = prm.get_double("Sliding increment");
+      max_distance     = prm.get_double("Maximum sliding distance");
+      steady_tolerance = prm.get_double("Steady-state tolerance");
+      steady_window    = prm.get_double("Steady-state window");
+      solver = parse_choice<SlidingSolver>(prm.get("Solver"), "Sliding/Solver");
       continuation_factor   = prm.get_double("Continuation factor");
       viscous_strain_degree = prm.get_integer("Viscous strain degree");
       load_path.clear();
@@ -859,7 +915,7 @@ namespace viscoslide
           load_path.push_back(value);
         }
       prm.leave_subsection();
-      require(load_path.empty() || solver == "steady-state",
+      require(load_path.empty() || solver == SlidingSolver::steady_state,
               "'Sliding/Load path' needs 'Sliding/Solver' = steady-state "
               "(the transient solver holds the load of the approach)");
       require(load_path.empty() || speed > 0,
@@ -899,7 +955,7 @@ namespace viscoslide
       prm.enter_subsection("Solver");
       prm.declare_entry("Linear solver",
                         "automatic",
-                        Patterns::Selection("automatic|direct|iterative"),
+                        Patterns::Selection(choice_pattern<LinearSolver>()),
                         "'direct': MUMPS through Trilinos Amesos. "
                         "'iterative': GMRES with algebraic multigrid (ML). "
                         "'automatic': direct up to Direct solver limit "
@@ -935,9 +991,10 @@ namespace viscoslide
     Solver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      linear_solver         = prm.get("Linear solver");
-      direct_solver_limit   = prm.get_integer("Direct solver limit");
-      newton_tolerance      = prm.get_double("Newton tolerance");
+      linear_solver       = parse_choice<LinearSolver>(prm.get("Linear solver"),
+                                                 "Solver/Linear solver");
+      direct_solver_limit = prm.get_integer("Direct solver limit");
+      newton_tolerance    = prm.get_double("Newton tolerance");
       max_newton_iterations = prm.get_integer("Maximum Newton iterations");
       line_search           = prm.get_bool("Line search");
       max_relaxation_steps  = prm.get_integer("Maximum relaxation steps");
@@ -982,7 +1039,7 @@ namespace viscoslide
       prm.declare_entry(
         "Controls",
         "",
-        Patterns::List(Patterns::Selection(control_choices), 0),
+        Patterns::List(Patterns::Selection(choice_pattern<Control>()), 0),
         "Comma-separated 'displacement', 'force' and/or 'spring'; "
         "each replaces Sliding/Control.");
       prm.declare_entry("Spring stiffnesses",
@@ -1029,9 +1086,11 @@ namespace viscoslide
       tabor_parameters = numbers("Tabor parameters", true);
       thicknesses.clear();
       numbers("Layer thicknesses", true, &thicknesses);
-      approaches         = numbers("Approaches", false);
-      loads              = numbers("Loads", false);
-      controls           = Utilities::split_string_list(prm.get("Controls"));
+      approaches = numbers("Approaches", false);
+      loads      = numbers("Loads", false);
+      controls.clear();
+      for (const auto &w : Utilities::split_string_list(prm.get("Controls")))
+        controls.push_back(parse_choice<Control>(w, "Sweep/Controls"));
       spring_stiffnesses = numbers("Spring stiffnesses", true);
       shapes = Utilities::split_string_list(prm.get("Indenter shapes"));
       prm.leave_subsection();
@@ -1069,7 +1128,7 @@ namespace viscoslide
       sliding.parse(prm);
       solver.parse(prm);
       sweep.parse(prm);
-      solver.verbose = output.verbosity == "verbose";
+      solver.verbose = output.verbosity == Verbosity::verbose;
       check_consistency();
     }
 
@@ -1084,14 +1143,14 @@ namespace viscoslide
                 " must be well below the substrate height " +
                 std::to_string(geometry.height()));
       require(geometry.domain_width >= 2 * geometry.height() ||
-                geometry.substrate == "half-plane",
+                geometry.substrate == Substrate::half_plane,
               entry("Geometry", "Domain width", geometry.domain_width) +
                 " must be at least twice the Layer thickness");
       require(!loading.has_target_load() || loading.approach_speed == 0,
               "'Loading/Target load' needs a quasi-static approach "
               "('Loading/Approach speed' = 0): the load is found on the "
               "relaxed loading curve");
-      require(sliding.solver == "transient" || !loading.retract ||
+      require(sliding.solver == SlidingSolver::transient || !loading.retract ||
                 sliding.speed == 0,
               "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "
               "the steady-state solver has no time to retract in");
@@ -1108,8 +1167,9 @@ namespace viscoslide
                        p.adhesion.R_over_eps))
     , sigma_max(16. * dgamma / (9. * std::sqrt(3.) * eps))
     , force(std::cbrt(M_PI * dgamma * dgamma * E0_star * R))
-    , tau_arm(
-        p.material.time_constant == "relaxation" ? 1. : p.material.E0_over_Einf)
+    , tau_arm(p.material.time_constant == Parameters::TimeConstant::relaxation
+                ? 1.
+                : p.material.E0_over_Einf)
     , tau_ref(1.)
   {
   }

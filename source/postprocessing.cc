@@ -246,9 +246,9 @@ namespace viscoslide
                    comment,
                    comm);
     for (const auto &p : points)
-      table.add_row({CsvTable::format(p.x / scales.R),
-                     CsvTable::format(p.gap / scales.eps),
-                     CsvTable::format(p.pressure / scales.sigma_max),
-                     CsvTable::format(p.u_y / scales.eps)});
+      table.add_row({{"x_over_R", CsvTable::format(p.x / scales.R)},
+                     {"gap_over_eps", CsvTable::format(p.gap / scales.eps)},
+                     {"p_hat", CsvTable::format(p.pressure / scales.sigma_max)},
+                     {"u_y_over_eps", CsvTable::format(p.u_y / scales.eps)}});
   }
 } // namespace viscoslide

@@ -1,8 +1,13 @@
-// The finite element problem: a plane-strain standard-linear-solid block
+// The transient finite element problem: a plane-strain viscoelastic block
 // whose top surface interacts with a rigid indenter through a traction-gap
-// law. Read it like step-18 and step-42: setup_system(), assemble(),
-// solve_newton(), commit_history(), adapt_mesh() and output each live in one
-// function of contact_problem.cc.
+// law, loaded by approach, hold, sliding (the indenter profile moves over
+// the surface) and retraction. Read it like step-18 and step-42. Its
+// implementation is split by concern over source/contact_problem/, as
+// ASPECT splits its Simulator; each declaration below names its file.
+// The surface terms and the control of the indenter are the
+// SurfaceCoupling's (surface_coupling.h), shared with the steady-state
+// solver (steady_state/solver.h), which run() hands the sliding phase to
+// when Sliding/Solver = steady-state.
 #ifndef viscoslide_contact_problem_h
 #define viscoslide_contact_problem_h
 
@@ -26,13 +31,17 @@
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
 #include <viscoslide/material.h>
-#include <viscoslide/newton.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
+#include <viscoslide/steady_state_table.h>
+#include <viscoslide/surface_coupling.h>
 
-#include <array>
+#include <boost/serialization/access.hpp>
+
+#include <limits>
 #include <memory>
+#include <vector>
 
 namespace viscoslide
 {
@@ -46,39 +55,111 @@ namespace viscoslide
     double s     = 0.;
     double time  = 0.;
     double dt    = std::numeric_limits<double>::infinity();
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &delta &s &time &dt;
+    }
   };
 
   class ContactProblem
   {
+    friend class boost::serialization::access;
+
   public:
     static constexpr unsigned int dim = 2;
 
     // `progress`, if given, is appended to the per-step report lines (the
     // sweep driver's case k of n and time estimate); a resumed run tells it
-    // how much of the case its checkpoint holds.
+    // how much of the case its checkpoint holds. [core.cc]
     ContactProblem(const Parameters::AllParameters &parameters,
                    MPI_Comm                         mpi_communicator,
                    Progress                        *progress = nullptr);
 
-    // Approach, optional hold, optional retraction; writes all outputs.
-    // With `resume`, continues the transient sliding phase from the
-    // checkpoint in the output directory instead (doc/restart.md).
+    // Approach, optional hold, sliding, optional retraction; writes all
+    // outputs. With `resume`, continues the transient sliding phase from
+    // the checkpoint in the output directory instead (doc/restart.md).
+    // [core.cc]
     void
     run(bool resume = false);
 
     // Whether `directory` holds a complete checkpoint of a sliding run.
+    // [checkpoint_restart.cc]
     static bool
     has_checkpoint(const std::string &directory);
 
-    // The columns of steady_state.csv, so that the sweep driver can write
-    // a row for a case that failed before writing its own.
-    static std::vector<std::string>
-    steady_state_columns();
-
   private:
-    // Components of the quadrature-point history: the stress of each arm
-    // (xx, yy, xy, zz of arm k at 4 k ... 4 k + 3), then the energy
-    // dissipated so far per unit volume.
+    // The phases of the loading program, named in approach.csv.
+    enum class Phase
+    {
+      start,
+      approach,
+      load,
+      hold,
+      slide,
+      retract
+    };
+    static std::string
+    name(Phase phase);
+
+    // --- the loading program [core.cc]
+
+    // Solves one step of the loading program, cutting it when Newton fails,
+    // and adapting the mesh to its solution. Returns false only if nothing
+    // worked.
+    bool
+    advance_to(const LoadState &target, Phase phase);
+    // One step from the committed state, predicted along the secant of the
+    // last step where that helps; the Newton iterations or -1.
+    int
+    solve_step(const LoadState &trial);
+    // From the committed delta to `to` in Loading/Approach increment steps.
+    void
+    ramp(Phase phase, double to);
+    // Approach until F_n passes Loading/Target load, then hold exactly that
+    // load for one force-controlled solve.
+    void
+    approach_to_load();
+    // Loading/Hold time in geometrically growing steps.
+    void
+    hold();
+    [[noreturn]] void
+    abort_run(const LoadState &target);
+
+    // --- the system and Newton's method [assembly.cc]
+
+    void
+    setup_system();
+    // Residual -R(u) and, if asked, the consistent tangent dR/du.
+    void
+    assemble(bool with_matrix);
+    // Factorizes (direct) or preconditions (iterative) system_matrix once;
+    // solve() may then be called for several right-hand sides.
+    void
+    prepare_linear_solver();
+    void
+    solve(const TrilinosWrappers::MPI::Vector &rhs,
+          TrilinosWrappers::MPI::Vector       &x);
+    void
+    solve_newton_system();
+    SurfaceCoupling::System
+    newton_system();
+    // Newton's method for the state `target` from the current iterate.
+    // Returns the iterations used, or -1 if it did not converge.
+    int
+    solve_newton(const LoadState &target);
+    // Lands on the new branch after a surface instability by damped
+    // pseudo-time stepping. Returns the pseudo-steps used or -1.
+    int
+    relax_to_equilibrium(const LoadState &target);
+
+    // --- the quadrature-point history [history.cc]
+
+    // Components of the history: the stress of each arm (xx, yy, xy, zz of
+    // arm k at 4 k ... 4 k + 3), then the energy dissipated so far per unit
+    // volume.
     enum ArmStressComponent
     {
       h_xx,
@@ -92,47 +173,6 @@ namespace viscoslide
     {
       return n_arm_stress_components * material.n_arms();
     }
-
-    void
-    setup_system();
-    void
-    assemble(bool with_matrix);
-    // Factorizes (direct) or preconditions (iterative) system_matrix once;
-    // solve() may then be called for several right-hand sides.
-    void
-    prepare_linear_solver();
-    void
-    solve(const TrilinosWrappers::MPI::Vector &rhs,
-          TrilinosWrappers::MPI::Vector       &x);
-    // The Newton update (newton_update, and delta_update under force
-    // control) from the assembled system.
-    void
-    solve_newton_system();
-    double
-    residual_norm() const;
-
-    // Newton's method for the state `target` from the current iterate.
-    // Returns the iterations used, or -1 if it did not converge.
-    int
-    solve_newton(const LoadState &target);
-    // The callbacks of newton() and relax() for this problem; u0 and
-    // delta0 keep the iterate a line search starts from.
-    NewtonProblem
-    newton_problem(TrilinosWrappers::MPI::Vector &u0, double &delta0);
-    // Lands on the new branch after a surface instability by damped
-    // pseudo-time stepping. Returns the total Newton iterations or -1.
-    int
-    relax_to_equilibrium(const LoadState &target);
-    // Solves one step of the loading program, cutting it when Newton fails,
-    // and adapting the mesh to its solution. Returns false only if nothing
-    // worked.
-    bool
-    advance_to(const LoadState &target, const std::string &phase);
-    // Approach until F_n passes Loading/Target load, then hold exactly that
-    // load for one force-controlled solve.
-    void
-    approach_to_load();
-
     void
     read_cell_history(const DoFHandler<dim>::active_cell_iterator &cell,
                       std::vector<double>                         &values,
@@ -143,15 +183,66 @@ namespace viscoslide
     arm_stress_at(const std::vector<double> &history_values,
                   unsigned int               arm,
                   unsigned int               q) const;
+    // Accepts the current state: updates the history, the secant
+    // predictor and the committed state.
     void
     commit_history();
+    // The history with the ghost values SolutionTransfer needs.
+    std::vector<TrilinosWrappers::MPI::Vector>
+    ghosted_history() const;
+    // integral of D dA at the committed state.
+    double
+    total_dissipation_rate() const;
+
+    // --- the mesh [refinement.cc]
+
     bool
     adapt_mesh();
     void
     refine_initial_mesh();
 
+    // --- the sliding phase [sliding.cc]
+
     void
-    record_step(const std::string &phase);
+    slide(bool resumed = false);
+    void
+    slide_steady();
+    // Sets slide_plan from the state after the approach.
+    void
+    plan_slide();
+    // The means of the samples with from < s <= to.
+    struct SlideSample;
+    SlideSample
+    window_mean(double from, double to) const;
+    bool
+    window_is_steady() const;
+    // The steady_state.csv row of the last window.
+    void
+    report_slide(bool steady);
+
+    // --- checkpoint and restart [checkpoint_restart.cc]
+
+    void
+    write_checkpoint();
+    void
+    read_checkpoint();
+
+    // --- output [output.cc]
+
+    // approach.csv and history.csv: new, or continued after the rows of a
+    // checkpoint.
+    void
+    open_approach_table(bool resume);
+    void
+    open_history_table(bool resume);
+    std::unique_ptr<CsvTable>
+    open_table(const std::string              &name,
+               const std::vector<std::string> &columns,
+               bool                            resume,
+               unsigned int                    keep_rows,
+               const std::string              &units) const;
+    void
+    record_step(Phase phase);
     void
     write_fields();
     void
@@ -166,12 +257,13 @@ namespace viscoslide
     const ViscoelasticSolid               material;
     const std::unique_ptr<InteractionLaw> law;
     const std::unique_ptr<Indenter>       indenter;
+    const SurfacePostprocessor            postprocessor;
+    SurfaceCoupling                       coupling;
 
     parallel::distributed::Triangulation<dim> triangulation;
     const FESystem<dim>                       fe;
     DoFHandler<dim>                           dof_handler;
     const QGauss<dim>                         quadrature;
-    const QGauss<dim - 1>                     face_quadrature;
 
     // The history lives in a discontinuous field whose nodes are the Gauss
     // points of `quadrature`, so that SolutionTransfer carries it through
@@ -188,10 +280,8 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector  old_solution; // ghosted, last committed
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  newton_update;
-    TrilinosWrappers::MPI::Vector  relaxation_anchor;    // ghosted
-    double                         surface_damping = 0.; // relax() only
     // Change of the solution over the last committed step and the change of
-    // delta it came with: the secant predictor of the next step.
+    // delta and s it came with: the secant predictor of the next step.
     TrilinosWrappers::MPI::Vector last_increment; // ghosted
     double                        last_increment_delta = 0.;
     double                        last_increment_s     = 0.;
@@ -203,67 +293,31 @@ namespace viscoslide
     LoadState committed; // state of old_solution/history
     LoadState current;   // state `solution` is an equilibrium of
 
-    // Residual scale of the last assembly: total |surface traction| force.
-    double traction_scale;
-
-    // Force control: delta is an unknown and Fn(u, delta) = target_force the
-    // extra equation. Assembly then also provides the border of the Newton
-    // system, b = dR/d delta = (dFn/du)^T, d = dFn/d delta, and the force
-    // mismatch.
-    // Spring control is force control with a target that follows delta:
-    // target_force + spring_stiffness (spring_delta - delta).
-    bool                          force_control    = false;
-    double                        target_force     = 0.;
-    double                        spring_stiffness = 0.;
-    double                        spring_delta     = 0.;
-    TrilinosWrappers::MPI::Vector delta_coupling; // b
-    double                        delta_stiffness = 0.;
-    double                        force_mismatch  = 0.;
-    double                        delta_update    = 0.;
-
     std::unique_ptr<TrilinosWrappers::SolverDirect>    direct_solver;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
-    // Sliding phase, by time stepping or by the steady-state solver.
-    void
-    slide(bool resumed = false);
-    void
-    slide_steady();
-    // steady_state.csv: a row for the sliding case (for each listed speed
-    // with the steady-state solver); the file is created by the first row.
-    std::unique_ptr<CsvTable> steady_state_table;
-    void
-    write_steady_state(double                   V_hat,
-                       double                   delta,
-                       const SurfaceQuantities &quantities,
-                       double                   dissipation_rate,
-                       bool                     steady,
-                       double                   distance,
-                       const std::string       &solver);
-    [[noreturn]] void
-                      abort_run(const LoadState &target);
-    SurfaceQuantities last_quantities{};
-    double            last_dissipation_rate = 0.;
-    double
-                              total_dissipation_rate() const;
-    std::unique_ptr<CsvTable> history_table;
-
-    SurfacePostprocessor      postprocessor;
     OutputWriter              writer;
     std::unique_ptr<CsvTable> approach_table;
+    std::unique_ptr<CsvTable> history_table;
+    SteadyStateTable          steady_state_table;
+    SurfaceQuantities         last_quantities{};
+    double                    last_dissipation_rate = 0.;
 
     Progress *progress;
-    // Sliding distance of the transient run so far and its maximum, for
-    // the progress report.
-    double slid = 0., slide_distance = 0.;
 
     // The transient sliding phase: where it started, the contact length
     // after the approach, how far it may go and over which window steady
-    // state is judged; the samples of Fn (or delta), Ft and L so far, and
-    // the rows of history.csv. All of it is in a checkpoint.
+    // state is judged; the samples of delta, Fn, Ft and L so far.
     struct SlidePlan
     {
       double s0 = 0., L0 = 0., distance = 0., window = 0.;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &s0 &L0 &distance &window;
+      }
     } slide_plan;
     struct SlideSample
     {
@@ -278,25 +332,32 @@ namespace viscoslide
         n_values
       };
       double s = 0., value[n_values] = {};
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &s &value;
+      }
     };
     std::vector<SlideSample> samples;
-    unsigned int             history_rows = 0, approach_rows = 0;
 
-    // Checkpoint and restart (doc/restart.md): the mesh with solution,
-    // history and predictor attached (p4est serialization), and the
-    // scalars of the sliding phase in a text file; written into
-    // checkpoint.tmp/ and then renamed to checkpoint/.
-    void
-    write_checkpoint();
-    void
-    read_checkpoint();
-    std::vector<TrilinosWrappers::MPI::Vector>
-    ghosted_history() const;
+    unsigned int step_number            = 0;
+    unsigned int history_rows           = 0;
+    unsigned int approach_rows          = 0;
+    unsigned int last_newton_iterations = 0;
+    unsigned int last_step_cuts         = 0;
+    bool         last_step_relaxed      = false;
 
-    unsigned int step_number;
-    unsigned int last_newton_iterations;
-    unsigned int last_step_cuts;
-    bool         last_step_relaxed;
+    // Every scalar a resumed sliding phase needs, for the checkpoint.
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &step_number &history_rows &approach_rows &committed;
+      ar &last_increment_delta &last_increment_s   &coupling;
+      ar &slide_plan                               &samples;
+    }
   };
 } // namespace viscoslide
 

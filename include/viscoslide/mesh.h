@@ -7,6 +7,7 @@
 
 #include <viscoslide/parameters.h>
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,14 @@ namespace viscoslide
   flag_cells_near_edges(parallel::distributed::Triangulation<2> &triangulation,
                         const std::vector<std::pair<double, double>> &edges,
                         const Parameters::AllParameters              &prm);
+
+  // After a converged solve: adapts the mesh to the new solution and
+  // solves again, until the mesh stays or max_cycles times. Returns the
+  // iterations of the re-solves, or -1 if one failed.
+  int
+  resolve_on_adapted_meshes(unsigned int                 max_cycles,
+                            const std::function<bool()> &adapt_mesh,
+                            const std::function<int()>  &solve);
 } // namespace viscoslide
 
 #endif

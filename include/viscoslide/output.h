@@ -8,6 +8,8 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <viscoslide/parameters.h>
+
 #include <chrono>
 #include <fstream>
 #include <map>
@@ -21,9 +23,15 @@ namespace viscoslide
 
   // A CSV file with a header line, written by rank 0 only. Each row is
   // flushed as it is added so that a killed run keeps every finished step.
+  // The columns are declared once, by the constructor; a row names each
+  // value's column, and a row whose names differ from the columns is an
+  // error (std::logic_error) in every build.
   class CsvTable
   {
   public:
+    // (column, value) in the order of the columns.
+    using Row = std::vector<std::pair<std::string, std::string>>;
+
     CsvTable(const std::string              &filename,
              const std::vector<std::string> &columns,
              const std::string              &comment,
@@ -36,16 +44,16 @@ namespace viscoslide
              std::size_t                     keep_rows,
              MPI_Comm                        comm);
 
-    // Numbers are written with 12 significant digits.
     void
-    add_row(const std::vector<std::string> &values);
+    add_row(const Row &row);
 
+    // Numbers are written with 12 significant digits.
     static std::string
     format(double value);
 
   private:
     std::unique_ptr<std::ofstream> file;
-    std::size_t                    n_columns;
+    std::vector<std::string>       columns;
   };
 
 
@@ -54,9 +62,9 @@ namespace viscoslide
   public:
     // format: "vtu" (one .vtu per process, .pvtu, .pvd) or "hdf5" (one
     // .h5 per step written by all processes, .xdmf collection).
-    OutputWriter(const std::string &directory,
-                 MPI_Comm           comm,
-                 const std::string &format = "vtu");
+    OutputWriter(const std::string            &directory,
+                 MPI_Comm                      comm,
+                 const Parameters::FieldFormat format);
 
     // Creates the directory. Refuses (throws) if it already holds the
     // results of a run and overwriting was not asked for.
@@ -84,9 +92,9 @@ namespace viscoslide
     resume_collection(const std::string &name, unsigned int before);
 
   private:
-    std::string directory;
-    MPI_Comm    comm;
-    std::string format;
+    std::string             directory;
+    MPI_Comm                comm;
+    Parameters::FieldFormat format;
     // Per collection: (time, file) of each .pvtu, or (counter, <Grid>
     // element) of each .h5.
     std::map<std::string, std::vector<std::pair<double, std::string>>> records;

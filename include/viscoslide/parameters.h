@@ -21,15 +21,80 @@ namespace viscoslide
 
   namespace Parameters
   {
+    // The choices of Selection entries, parsed once where the file is read
+    // so that a solver never compares strings and an unknown value cannot
+    // reach it. to_string() gives the word of the parameter file, which is
+    // also what the outputs write.
+    enum class Verbosity
+    {
+      quiet,
+      normal,
+      verbose
+    };
+    enum class FieldFormat
+    {
+      vtu,
+      hdf5
+    };
+    enum class TimeConstant
+    {
+      relaxation,
+      retardation
+    };
+    enum class Substrate
+    {
+      half_plane,
+      layer
+    };
+    enum class Control
+    {
+      displacement,
+      force,
+      spring
+    };
+    enum class SlidingSolver
+    {
+      transient,
+      steady_state
+    };
+    enum class LinearSolver
+    {
+      automatic,
+      direct,
+      iterative
+    };
+
+    // The words of an enum's choices, in the order of its values.
+    template <typename Choice>
+    const std::vector<std::string> &
+    choice_names();
+
+    template <typename Choice>
+    std::string
+    to_string(const Choice choice)
+    {
+      return choice_names<Choice>()[static_cast<unsigned int>(choice)];
+    }
+
+    // "a|b|c", for Patterns::Selection.
+    template <typename Choice>
+    std::string
+    choice_pattern();
+
+    // The choice a word names; ExcInvalidInput naming `entry` otherwise.
+    template <typename Choice>
+    Choice
+    parse_choice(const std::string &word, const std::string &entry);
+
     struct Output
     {
       std::string  directory;
-      std::string  verbosity; // "quiet", "normal" or "verbose"
+      Verbosity    verbosity;
       unsigned int fields_every;
       unsigned int profile_every;
       unsigned int checkpoint_every; // sliding steps; 0: none
       bool         write_fields;
-      std::string  field_format; // "vtu" or "hdf5"
+      FieldFormat  field_format;
 
       static void
       declare(ParameterHandler &prm);
@@ -39,9 +104,9 @@ namespace viscoslide
 
     struct Material
     {
-      double      E0_over_Einf;
-      double      poisson_ratio;
-      std::string time_constant; // "relaxation" or "retardation"
+      double       E0_over_Einf;
+      double       poisson_ratio;
+      TimeConstant time_constant;
       // Arms of the generalised Maxwell solid; empty: one arm, the
       // standard linear solid.
       std::vector<PronyTerm> prony_series;
@@ -88,10 +153,10 @@ namespace viscoslide
 
     struct Geometry
     {
-      std::string substrate; // "half-plane" or "layer"
-      double      layer_thickness;
-      double      domain_width;
-      double      domain_height;
+      Substrate substrate;
+      double    layer_thickness;
+      double    domain_width;
+      double    domain_height;
 
       static void
       declare(ParameterHandler &prm);
@@ -102,7 +167,7 @@ namespace viscoslide
       double
       height() const
       {
-        return substrate == "layer" ? layer_thickness : domain_height;
+        return substrate == Substrate::layer ? layer_thickness : domain_height;
       }
     };
 
@@ -150,15 +215,15 @@ namespace viscoslide
 
     struct Sliding
     {
-      std::vector<double> speeds;  // V_hat, in the order of continuation
-      double              speed;   // the last of them; 0: no sliding phase
-      std::string         control; // "displacement", "force" or "spring"
+      std::vector<double> speeds; // V_hat, in the order of continuation
+      double              speed;  // the last of them; 0: no sliding phase
+      Control             control;
       double              spring_stiffness; // k_hat, Control = spring
       double              increment;        // in finest cells
       double              max_distance;
       double              steady_tolerance;
       double              steady_window;
-      std::string         solver; // "transient" or "steady-state"
+      SlidingSolver       solver;
       double              continuation_factor;
       int                 viscous_strain_degree;
       // F_hat (force control) or delta_hat (displacement control) values
@@ -173,7 +238,7 @@ namespace viscoslide
 
     struct Solver
     {
-      std::string  linear_solver; // "automatic", "direct", "iterative"
+      LinearSolver linear_solver;
       unsigned int direct_solver_limit;
       double       newton_tolerance;
       unsigned int max_newton_iterations;
@@ -195,7 +260,7 @@ namespace viscoslide
       std::vector<std::string> thicknesses; // numbers or "half-plane"
       std::vector<double>      approaches;
       std::vector<double>      loads;
-      std::vector<std::string> controls;
+      std::vector<Control>     controls;
       std::vector<double>      spring_stiffnesses;
       std::vector<std::string> shapes;
 

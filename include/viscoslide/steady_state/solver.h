@@ -11,8 +11,15 @@
 // the surface traction law and this equation are solved together by
 // Newton's method (plus delta under force control, as in the transient
 // solver). doc/steady_state.md has the formulation and its limits.
-#ifndef viscoslide_steady_state_h
-#define viscoslide_steady_state_h
+//
+// The implementation is split over source/steady_state/: solver.cc (setup,
+// the start from the relaxed state, Newton's method and the continuation
+// in speed and load), assembly.cc (the equations), output.cc (dissipation,
+// profiles, fields and the rows of the stations). The surface terms and the
+// control of the indenter are the SurfaceCoupling's, shared with the
+// transient solver.
+#ifndef viscoslide_steady_state_solver_h
+#define viscoslide_steady_state_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -29,13 +36,12 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <viscoslide/indenter.h>
-#include <viscoslide/interaction_law.h>
 #include <viscoslide/material.h>
-#include <viscoslide/newton.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
+#include <viscoslide/steady_state_table.h>
+#include <viscoslide/surface_coupling.h>
 
 #include <functional>
 #include <memory>
@@ -49,11 +55,12 @@ namespace viscoslide
   public:
     static constexpr unsigned int dim = 2;
 
+    // The solver takes over the coupling (whose control the caller sets
+    // after initialize()) and the triangulation. [solver.cc]
     SteadyStateSolver(const Parameters::AllParameters         &prm,
                       const Scales                            &scales,
                       const ViscoelasticSolid                 &material,
-                      const InteractionLaw                    &law,
-                      const Indenter                          &indenter,
+                      SurfaceCoupling                         &coupling,
                       const SurfacePostprocessor              &postprocessor,
                       parallel::distributed::Triangulation<2> &triangulation,
                       TimerOutput                             &timer);
@@ -62,24 +69,30 @@ namespace viscoslide
     // Starts from a relaxed equilibrium: the displacement u of a
     // FESystem(FE_Q(2), 2) on the same triangulation, at approach delta with
     // the indenter at s; eps_v is the cell-wise L2 projection of eps(u),
-    // the relaxed state.
+    // the relaxed state. [solver.cc]
     void
     initialize(const DoFHandler<dim>               &displacement_dofs,
                const TrilinosWrappers::MPI::Vector &u,
                double                               delta,
                double                               s);
 
-    // Under force control delta is an unknown and Fn is held at this
-    // value; with a spring (stiffness in N/m per unit length), Fn =
-    // normal_force + spring_stiffness (delta now - delta).
+    // The stations of Sliding/Sliding speed and Sliding/Load path, one
+    // after the other by continuation: a row of `table` and a profile for
+    // each, fields if asked, and continuation.csv with every converged
+    // step. A station that cannot be reached gets its row with steady = 0
+    // (values of the last converged state, whose V_hat, delta and F_n it
+    // shows), the continuation goes on to the next one, and at the end
+    // std::runtime_error names the stations missed. [output.cc]
     void
-    hold_force(double normal_force, double spring_stiffness = 0.);
+    run_stations(OutputWriter     &writer,
+                 SteadyStateTable &table,
+                 Progress         *progress);
 
     // Continues the steady state from its present speed to V_hat in steps
     // no larger than the Continuation factor (shorter where Newton fails),
     // adapting the mesh to the contact edges at each speed. Returns false
     // if a step could not be solved; the state is then the last converged
-    // one, at speed().
+    // one, at speed(). [solver.cc]
     bool
     continue_to(
       double                       V_hat,
@@ -88,6 +101,7 @@ namespace viscoslide
     // Follows the steady state at the current speed to a new load: F_n
     // under force control, delta under displacement control (SI units),
     // by continuation in steps; false if a step cannot be solved.
+    // [solver.cc]
     bool
     continue_to_load(
       double                       target,
@@ -108,7 +122,7 @@ namespace viscoslide
     {
       return last_quantities;
     }
-    // integral of D over the block
+    // integral of D over the block [output.cc]
     double
     dissipation_rate() const;
     // Newton iterations of the last converged speed (re-solves after mesh
@@ -124,34 +138,61 @@ namespace viscoslide
       return dof_handler.n_dofs();
     }
 
+    // [output.cc]
     void
     write_profile(const std::string &path) const;
     // Displacement, viscous strain, stress and D over the block, and the
-    // surface pressure and gap, as VTU/PVTU through the writer.
+    // surface pressure and gap, as VTU/PVTU through the writer. [output.cc]
     void
     write_fields(OutputWriter &writer, unsigned int counter) const;
 
   private:
+    // [solver.cc]
     void
     setup_system();
+    // [assembly.cc]: the residual and Jacobian, on MeshWorker::mesh_loop
+    // as in step-12: cells, the upwind fluxes of the interior faces, and
+    // the boundary faces (outflow and the SurfaceCoupling's top surface).
     void
     assemble(bool with_matrix);
+    struct AssemblyCoefficients;
+    struct AssemblyScratch;
+    struct AssemblyCopy;
+    void
+    assemble_cell(const DoFHandler<dim>::active_cell_iterator &cell,
+                  const AssemblyCoefficients                  &coefficients,
+                  bool                                         with_matrix,
+                  AssemblyScratch                             &scratch,
+                  AssemblyCopy                                &copy) const;
+    void
+    assemble_boundary(const DoFHandler<dim>::active_cell_iterator &cell,
+                      unsigned int                                 face_no,
+                      const AssemblyCoefficients                  &coefficients,
+                      bool                                         with_matrix,
+                      AssemblyScratch                             &scratch,
+                      AssemblyCopy                                &copy) const;
+    void
+    assemble_interface(const DoFHandler<dim>::active_cell_iterator &cell,
+                       unsigned int                                 face_no,
+                       unsigned int                                 subface_no,
+                       const DoFHandler<dim>::active_cell_iterator &neighbor,
+                       unsigned int                neighbor_face_no,
+                       unsigned int                neighbor_subface_no,
+                       const AssemblyCoefficients &coefficients,
+                       AssemblyScratch            &scratch,
+                       AssemblyCopy               &copy) const;
+    // [solver.cc]
     void
     solve_newton_system();
     void
-    solve_linear(TrilinosWrappers::MPI::Vector       &x,
-                 const TrilinosWrappers::MPI::Vector &b);
-    double
-    residual_norm() const;
-    NewtonProblem
-    newton_problem(TrilinosWrappers::MPI::Vector &u0, double &delta0);
-    // Newton's method at the present V_hat; the iterations used or -1.
+    solve_linear(const TrilinosWrappers::MPI::Vector &b,
+                 TrilinosWrappers::MPI::Vector       &x);
+    SurfaceCoupling::System
+    newton_system();
+    // Newton's method, else pseudo-transient relaxation, at the present
+    // V_hat and load; the iterations used or -1.
     int
-    solve_newton();
-    // Pseudo-transient continuation to the steady state at the present
-    // V_hat (relax()); the pseudo-steps used or -1.
-    int
-    relax_to_equilibrium();
+    solve_newton_or_relax();
     int
     solve_step(const std::string &what);
     bool
@@ -162,8 +203,7 @@ namespace viscoslide
     const Parameters::AllParameters         &prm;
     const Scales                            &scales;
     const ViscoelasticSolid                 &material;
-    const InteractionLaw                    &law;
-    const Indenter                          &indenter;
+    SurfaceCoupling                         &coupling;
     const SurfacePostprocessor              &postprocessor;
     parallel::distributed::Triangulation<2> &triangulation;
     TimerOutput                             &timer;
@@ -175,7 +215,6 @@ namespace viscoslide
     const FESystem<dim>   fe;
     DoFHandler<dim>       dof_handler;
     const QGauss<dim>     quadrature;
-    const QGauss<dim - 1> face_quadrature; // top surface (traction law)
     const QGauss<dim - 1> flux_quadrature; // vertical faces (upwind fluxes)
     // Local dofs of the first viscous-strain component.
     std::vector<unsigned int> strain_basis;
@@ -193,20 +232,9 @@ namespace viscoslide
     // Counters for the log and the benchmark.
     unsigned int factorizations = 0, krylov_iterations = 0;
 
-    TrilinosWrappers::MPI::Vector relaxation_anchor; // ghosted
-    double                        surface_damping = 0.;
-
     double V_hat = 0.;
     double delta = 0.;
     double s     = 0.;
-
-    bool                          force_control    = false;
-    double                        target_force     = 0.;
-    double                        spring_stiffness = 0.;
-    double                        spring_delta     = 0.;
-    TrilinosWrappers::MPI::Vector delta_coupling;
-    double delta_stiffness = 0., force_mismatch = 0., delta_update = 0.,
-           traction_scale = 0.;
 
     SurfaceQuantities last_quantities{};
     unsigned int      last_newton_iterations = 0;

@@ -1,0 +1,61 @@
+// steady_state.csv of a case: one row per steady sliding state that a
+// solver reached (or failed to reach), written by every solver through the
+// same columns, and printed with the energy balance (implemented in
+// source/steady_state_table.cc; the columns are documented in
+// doc/outputs.md).
+#ifndef viscoslide_steady_state_table_h
+#define viscoslide_steady_state_table_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/postprocessing.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  class SteadyStateTable
+  {
+  public:
+    // The file is created by the first row.
+    SteadyStateTable(const Parameters::AllParameters &prm,
+                     const Scales                    &scales,
+                     const std::string               &filename,
+                     MPI_Comm                         comm);
+
+    // The columns, also for the sweep driver's row of a case that failed
+    // before writing its own.
+    static std::vector<std::string>
+    columns();
+
+    // A state at speed V_hat and approach delta (internal units) with the
+    // surface quantities and the total dissipation rate. `steady` = false:
+    // the state is the last converged one of a station that was not
+    // reached; `distance` is the transient's sliding distance (0 for the
+    // steady-state solver).
+    void
+    add_row(double                    V_hat,
+            double                    delta,
+            const SurfaceQuantities  &quantities,
+            double                    dissipation_rate,
+            bool                      steady,
+            double                    distance,
+            Parameters::SlidingSolver solver,
+            ConditionalOStream       &out);
+
+  private:
+    const Parameters::AllParameters &prm;
+    const Scales                    &scales;
+    const std::string                filename;
+    MPI_Comm                         comm;
+    std::unique_ptr<CsvTable>        table;
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,252 @@
+// The coupling of the block's top surface to the rigid indenter: the one
+// place where the surface physics of every solver is written (implemented
+// in source/surface_coupling.cc).
+//
+//  * The traction law's face term -<p(g), v_y>_top and its tangent, with
+//    the gap g = h(x - s) - delta - u_y (doc/conventions.md).
+//  * The control of the indenter. Displacement: delta is given. Force: delta
+//    is an unknown and F_n(u, delta) = F0 the extra equation. Spring: force
+//    control with F0 + k (delta0 - delta) as the target. Force control
+//    borders the Newton system, which solve_bordered() solves with two
+//    solves of the solver's own Jacobian.
+//  * The surface dashpot of the pseudo-transient relaxation (relax()), by
+//    which a solver lands on a new branch after a contact edge jumped.
+//  * The contact edges that the adaptive mesh follows.
+//
+// A solver assembles its bulk terms and, on every top face, calls
+// add_face_terms(); copy_local_to_global() per cell and finish_assembly()
+// at the end complete the force-control border. newton() and relax() then
+// drive the solver's System.
+#ifndef viscoslide_surface_coupling_h
+#define viscoslide_surface_coupling_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <viscoslide/indenter.h>
+#include <viscoslide/interaction_law.h>
+#include <viscoslide/newton.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/postprocessing.h>
+
+#include <boost/serialization/access.hpp>
+
+#include <functional>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  class SurfaceCoupling
+  {
+    friend class boost::serialization::access;
+
+  public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    SurfaceCoupling(const Parameters::AllParameters &prm,
+                    const Scales                    &scales,
+                    const InteractionLaw            &law,
+                    const Indenter                  &indenter,
+                    const SurfacePostprocessor      &postprocessor,
+                    MPI_Comm                         comm);
+
+    // --- control of the indenter
+
+    // Displacement control: delta is given.
+    void
+    hold_approach();
+    // Force control at F_n = normal_force; with a spring (stiffness in
+    // force per unit length per length of approach) the target is
+    // normal_force + spring_stiffness (spring_delta - delta).
+    void
+    hold_force(double normal_force,
+               double spring_stiffness = 0.,
+               double spring_delta     = 0.);
+    bool
+    force_control() const
+    {
+      return force_controlled;
+    }
+    // The F_n held under force control, for continuation in the load.
+    double &
+    held_force()
+    {
+      return target_force;
+    }
+    // The spring of Sliding/Control = spring; 0 for the other controls.
+    static double
+    spring_stiffness_of(const Parameters::AllParameters &prm,
+                        const Scales                    &scales);
+
+    const InteractionLaw &
+    law() const
+    {
+      return traction_law;
+    }
+    const Indenter &
+    indenter() const
+    {
+      return profile;
+    }
+
+    // --- assembly
+
+    // Quadrature and update flags of the FEFaceValues that
+    // add_face_terms() is given.
+    const Quadrature<1> &
+    face_quadrature() const
+    {
+      return quadrature;
+    }
+    static UpdateFlags
+    face_update_flags()
+    {
+      return update_values | update_quadrature_points | update_JxW_values;
+    }
+
+    // What the top faces of one cell contribute besides the cell's
+    // residual and matrix: the column b = dR/d delta of the border, and
+    // their force, its derivative by delta and |traction|.
+    struct LocalTerms
+    {
+      Vector<double> coupling;
+      double         force = 0., stiffness = 0., abs_force = 0.;
+
+      void
+      reinit(unsigned int dofs_per_cell);
+    };
+
+    // Sizes the border for the solver's dofs; after every setup.
+    void
+    reinit(const IndexSet &locally_owned_dofs);
+    // Zeroes what copy_local_to_global() accumulates.
+    void
+    start_assembly();
+    // Adds, on the top face `face_values` is reinit'ed on (component 1 of
+    // the solver's element is u_y),
+    //   -<p(g), v_y> + c <u_y - u_y^anchor, v_y>
+    // to cell_rhs (as -R) and its tangent to cell_matrix. The dashpot term
+    // acts only during relax().
+    void
+    add_face_terms(const FEFaceValuesBase<2> &face_values,
+                   const VectorType          &solution,
+                   double                     delta,
+                   double                     s,
+                   bool                       with_matrix,
+                   FullMatrix<double>        &cell_matrix,
+                   Vector<double>            &cell_rhs,
+                   LocalTerms                &local) const;
+    void
+    copy_local_to_global(const LocalTerms                           &local,
+                         const std::vector<types::global_dof_index> &dofs,
+                         const AffineConstraints<double> &constraints);
+    // Sums over the processes; under force control the mismatch
+    // F_n - target and its derivative by delta.
+    void
+    finish_assembly(double delta);
+
+    // --- Newton's method
+
+    // |R| and, under force control, the force mismatch.
+    double
+    residual_norm(const VectorType &rhs) const;
+
+    // Solves K x = b for the solver's Jacobian K as assembled last.
+    using LinearSolve = std::function<void(const VectorType &b, VectorType &x)>;
+    // The Newton update of the bordered system
+    //   [K   b] [du    ]   [-R]
+    //   [b^T d] [ddelta] = [-G],   G = F_n - target,
+    // with two solves of K (one under displacement control). `update` is
+    // not yet distributed to constrained dofs.
+    void
+    solve_bordered(const LinearSolve &solve,
+                   const VectorType  &rhs,
+                   VectorType        &update);
+
+    // A solver's system as Newton's method sees it.
+    struct System
+    {
+      VectorType       &solution; // ghosted iterate
+      double           &delta;    // part of the iterate under force control
+      const VectorType &update;   // from compute_update()
+      const VectorType &rhs;      // -R of the last assembly
+      std::function<void(bool with_matrix)> assemble;
+      std::function<void()>                 compute_update;
+    };
+    // Newton's method with line search (newton()); the iterations used or
+    // -1.
+    int
+    newton(const System &system, ConditionalOStream &out);
+    // After a jump-in or jump-out no equilibrium is near the last one and
+    // Newton cannot get there: relax() (newton.h) follows the fictitious
+    // dynamics of the surface dashpot, whose initial stiffness is that of
+    // the traction law's wall, with pseudo-steps that move the surface by
+    // about half an eps. The pseudo-steps used or -1.
+    int
+    relax(const System &system, ConditionalOStream &out);
+
+    // --- the mesh
+
+    // Flags the cells at the contact edges (the top faces whose gap lies
+    // in the Mesh edge band; the region under the apex before contact) for
+    // flag_cells_near_edges(). Returns whether the mesh will change.
+    bool
+    flag_contact_edges(parallel::distributed::Triangulation<2> &triangulation,
+                       const DoFHandler<2>                     &dof_handler,
+                       const VectorType                        &solution,
+                       double                                   delta,
+                       double                                   s) const;
+
+    // The control's state, for a checkpoint.
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &force_controlled &target_force &spring_stiffness &spring_delta;
+    }
+
+  private:
+    NewtonProblem
+    newton_problem(const System &system);
+
+    const Parameters::AllParameters &prm;
+    const Scales                    &scales;
+    const InteractionLaw            &traction_law;
+    const Indenter                  &profile;
+    const SurfacePostprocessor      &postprocessor;
+    MPI_Comm                         comm;
+    const QGauss<1>                  quadrature;
+
+    bool   force_controlled = false;
+    double target_force     = 0.;
+    double spring_stiffness = 0.;
+    double spring_delta     = 0.;
+
+    VectorType delta_coupling; // b
+    double     force = 0., delta_stiffness = 0., abs_force = 0.;
+    double     force_mismatch = 0., delta_update = 0.;
+    // Residual scale of the last assembly: the total |traction| force.
+    double traction_scale = 0.;
+
+    double     surface_damping = 0.; // relax() only
+    VectorType relaxation_anchor;    // ghosted
+
+    // The iterate a line search starts from.
+    VectorType u0;
+    double     delta0 = 0.;
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,39 @@
+// The surface fields of every solver (pressure and gap along the top
+// surface) as VTU/PVTU or HDF5 through DataOutFaces (implemented in
+// source/surface_fields.cc).
+#ifndef viscoslide_surface_fields_h
+#define viscoslide_surface_fields_h
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <viscoslide/indenter.h>
+#include <viscoslide/interaction_law.h>
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+
+#include <string>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  // p_hat and gap_over_eps on the locally owned top faces, from u_y (the
+  // solution's component 1) with the indenter at approach delta and
+  // position s; step `counter` of the collection `name`.
+  void
+  write_surface_fields(OutputWriter                        &writer,
+                       const std::string                   &name,
+                       const DoFHandler<2>                 &dof_handler,
+                       const TrilinosWrappers::MPI::Vector &solution,
+                       const InteractionLaw                &law,
+                       const Indenter                      &indenter,
+                       const Scales                        &scales,
+                       double                               delta,
+                       double                               s,
+                       unsigned int                         counter,
+                       double                               time);
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,282 @@
+// ContactProblem: the tables (approach.csv, history.csv), the per-step
+// report, surface profiles and the volume and surface fields.
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <viscoslide/contact_problem.h>
+#include <viscoslide/surface_fields.h>
+
+#include <array>
+#include <iomanip>
+
+namespace viscoslide
+{
+  namespace
+  {
+    const std::vector<std::string> approach_columns{"step",
+                                                    "phase",
+                                                    "time_over_tau",
+                                                    "delta_hat",
+                                                    "F_n_hat",
+                                                    "F_t_hat",
+                                                    "L_hat",
+                                                    "min_gap_over_eps",
+                                                    "newton_iterations",
+                                                    "step_cuts",
+                                                    "jump",
+                                                    "n_dofs",
+                                                    "n_cells"};
+    const std::vector<std::string> history_columns{"time_over_tau",
+                                                   "s_over_eps",
+                                                   "delta_hat",
+                                                   "F_n_hat",
+                                                   "F_t_hat",
+                                                   "F_t_profile_hat",
+                                                   "mu",
+                                                   "L_hat",
+                                                   "dissipation_rate_hat",
+                                                   "mu_energy",
+                                                   "newton_iterations",
+                                                   "n_dofs"};
+  } // namespace
+
+
+  void
+  ContactProblem::open_approach_table(const bool resume)
+  {
+    approach_table =
+      open_table("approach.csv",
+                 approach_columns,
+                 resume,
+                 approach_rows,
+                 "; forces per unit length in (pi dgamma^2 E0* R)^(1/3)");
+  }
+
+
+  void
+  ContactProblem::open_history_table(const bool resume)
+  {
+    history_table =
+      open_table("history.csv", history_columns, resume, history_rows, "");
+  }
+
+
+  // A new table, or with `resume` the existing one continued after its
+  // first keep_rows rows (those of the checkpoint).
+  std::unique_ptr<CsvTable>
+  ContactProblem::open_table(const std::string              &name,
+                             const std::vector<std::string> &columns,
+                             const bool                      resume,
+                             const unsigned int              keep_rows,
+                             const std::string              &units) const
+  {
+    if (resume)
+      return std::make_unique<CsvTable>(writer.path(name),
+                                        columns,
+                                        keep_rows,
+                                        mpi_communicator);
+    return std::make_unique<CsvTable>(
+      writer.path(name),
+      columns,
+      version_string() + "; time unit: " +
+        Parameters::to_string(prm.material.time_constant) + " time" + units,
+      mpi_communicator);
+  }
+
+
+  void
+  ContactProblem::record_step(const Phase phase)
+  {
+    TimerOutput::Scope t(timer, "postprocessing");
+    const auto         sq = postprocessor.integrate(dof_handler,
+                                            solution,
+                                            committed.delta,
+                                            committed.s);
+    last_quantities       = sq;
+    last_dissipation_rate = total_dissipation_rate();
+    using F               = CsvTable;
+    const auto integer    = [](const auto n) { return std::to_string(n); };
+    if (phase == Phase::slide)
+      {
+        ++history_rows;
+        const double V = prm.sliding.speed * scales.eps / scales.tau_ref;
+        const double rate =
+          last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
+        history_table->add_row(
+          {{"time_over_tau", F::format(committed.time / scales.tau_ref)},
+           {"s_over_eps", F::format(committed.s / scales.eps)},
+           {"delta_hat", F::format(committed.delta / scales.eps)},
+           {"F_n_hat", F::format(sq.normal_force / scales.force)},
+           {"F_t_hat", F::format(sq.tangential_force / scales.force)},
+           {"F_t_profile_hat", F::format(sq.profile_force / scales.force)},
+           {"mu", F::format(std::abs(sq.tangential_force / sq.normal_force))},
+           {"L_hat", F::format(sq.contact_length / scales.R)},
+           {"dissipation_rate_hat", F::format(rate)},
+           {"mu_energy",
+            F::format(std::abs(last_dissipation_rate / V / sq.normal_force))},
+           {"newton_iterations", integer(last_newton_iterations)},
+           {"n_dofs", integer(dof_handler.n_dofs())}});
+      }
+    else
+      {
+        ++approach_rows;
+        approach_table->add_row(
+          {{"step", integer(step_number)},
+           {"phase", name(phase)},
+           {"time_over_tau", F::format(committed.time / scales.tau_ref)},
+           {"delta_hat", F::format(committed.delta / scales.eps)},
+           {"F_n_hat", F::format(sq.normal_force / scales.force)},
+           {"F_t_hat", F::format(sq.tangential_force / scales.force)},
+           {"L_hat", F::format(sq.contact_length / scales.R)},
+           {"min_gap_over_eps", F::format(sq.minimum_gap / scales.eps)},
+           {"newton_iterations", integer(last_newton_iterations)},
+           {"step_cuts", integer(last_step_cuts)},
+           {"jump", integer(last_step_relaxed ? 1 : 0)},
+           {"n_dofs", integer(dof_handler.n_dofs())},
+           {"n_cells", integer(triangulation.n_global_active_cells())}});
+      }
+    pcout << "  step " << std::setw(4) << step_number << "  " << std::setw(8)
+          << name(phase) << "  delta_hat " << std::setw(9) << committed.delta
+          << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
+          << "  L_hat " << std::setw(11) << sq.contact_length / scales.R
+          << "  Newton " << last_newton_iterations << "  dofs "
+          << dof_handler.n_dofs() << (last_step_relaxed ? "  (jump)" : "");
+    const double slid = committed.s - slide_plan.s0;
+    if (phase == Phase::slide)
+      pcout << "  s " << slid << "/" << slide_plan.distance << " eps";
+    if (progress != nullptr)
+      pcout << "  ["
+            << progress->report(
+                 phase == Phase::slide ? slid / slide_plan.distance : 0.)
+            << "]";
+    pcout << std::endl;
+
+    if (prm.output.profile_every > 0 &&
+        step_number % prm.output.profile_every == 0)
+      write_profile("surface_profile-" +
+                    Utilities::int_to_string(step_number, 5) + ".csv");
+    if (prm.output.write_fields && prm.output.fields_every > 0 &&
+        step_number % prm.output.fields_every == 0)
+      write_fields();
+    ++step_number;
+  }
+
+
+  void
+  ContactProblem::write_profile(const std::string &filename)
+  {
+    write_profile_csv(writer.path(filename),
+                      postprocessor.profile(
+                        dof_handler, solution, committed.delta, committed.s),
+                      scales,
+                      "delta_hat = " + CsvTable::format(committed.delta) +
+                        ", time_over_tau = " + CsvTable::format(committed.time),
+                      mpi_communicator);
+  }
+
+
+  // Volume fields (displacement, stress from the quadrature points,
+  // dissipation rate and accumulated dissipated energy, MPI subdomain,
+  // refinement level) and surface fields (pressure, gap).
+  void
+  ContactProblem::write_fields()
+  {
+    TimerOutput::Scope t(timer, "output");
+    enum
+    {
+      s_xx,
+      s_yy,
+      s_xy,
+      s_zz,
+      D,
+      n_fields
+    };
+    std::array<TrilinosWrappers::MPI::Vector, n_fields> fields;
+    for (auto &f : fields)
+      f.reinit(history_dof_handler.locally_owned_dofs(), mpi_communicator);
+
+    FEValues<dim> fe_values(fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    std::vector<types::global_dof_index> history_dofs(
+      history_fe.n_dofs_per_cell());
+    std::vector<double> values;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   strain);
+          read_cell_history(cell, values, history_dofs);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              ArmStress h;
+              double    rate = 0.;
+              for (unsigned int k = 0; k < material.n_arms(); ++k)
+                {
+                  const ArmStress h_k = arm_stress_at(values, k, q);
+                  h += h_k;
+                  rate += material.dissipation_rate(k, h_k);
+                }
+              const auto sigma = material.stress(strain[q], h);
+              const auto i     = history_dofs[quadrature_to_history_dof[q]];
+              fields[s_xx](i)  = sigma[0][0];
+              fields[s_yy](i)  = sigma[1][1];
+              fields[s_xy](i)  = sigma[0][1];
+              fields[s_zz](i)  = material.stress_zz(strain[q], h);
+              fields[D](i)     = rate;
+            }
+        }
+    for (auto &f : fields)
+      f.compress(VectorOperation::insert);
+
+    Vector<float> subdomain(triangulation.n_active_cells()),
+      level(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          subdomain(cell->active_cell_index()) = cell->subdomain_id();
+          level(cell->active_cell_index())     = cell->level();
+        }
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+    data_out.add_data_vector(
+      dof_handler,
+      solution,
+      std::vector<std::string>(dim, "displacement"),
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    const char *names[n_fields] = {
+      "stress_xx", "stress_yy", "stress_xy", "stress_zz", "dissipation_rate"};
+    for (unsigned int f = 0; f < n_fields; ++f)
+      data_out.add_data_vector(history_dof_handler, fields[f], names[f]);
+    data_out.add_data_vector(history_dof_handler,
+                             history[dissipated_energy()],
+                             "dissipated_energy");
+    // The paper's Fig. 5 shows it in units of dgamma/L (L the present
+    // contact length); zero while there is no contact.
+    TrilinosWrappers::MPI::Vector energy_hat(history[dissipated_energy()]);
+    energy_hat *= last_quantities.contact_length / scales.dgamma;
+    data_out.add_data_vector(history_dof_handler,
+                             energy_hat,
+                             "dissipated_energy_hat");
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.add_data_vector(level, "level");
+    data_out.build_patches(2);
+    writer.write(data_out, "solution", step_number, committed.time);
+
+    write_surface_fields(writer,
+                         "surface",
+                         dof_handler,
+                         solution,
+                         *law,
+                         *indenter,
+                         scales,
+                         committed.delta,
+                         committed.s,
+                         step_number,
+                         committed.time);
+  }
+} // namespace viscoslide

@@ -1,0 +1,221 @@
+// ContactProblem: the sliding phase, by time stepping until steady state
+// (slide()) or handed to the steady-state solver (slide_steady()).
+#include <viscoslide/contact_problem.h>
+#include <viscoslide/steady_state/solver.h>
+
+#include <cstdio>
+
+namespace viscoslide
+{
+  // How far to slide and over which window to judge steady state, from the
+  // contact length L0 after the approach.
+  void
+  ContactProblem::plan_slide()
+  {
+    const double V     = prm.sliding.speed * scales.eps / scales.tau_ref;
+    const double h_min = prm.mesh.finest_cell;
+    auto        &plan  = slide_plan;
+    plan.L0            = std::max(last_quantities.contact_length, 10. * h_min);
+    const double tau_c = scales.tau_arm / prm.material.E0_over_Einf;
+    // The relaxation length V tau_c sets the transient, but only as far
+    // as it is comparable to the contact: faster than that, the material
+    // crosses the contact unrelaxed and the contact is nearly steady once
+    // the material deformed during the approach has left it. Nearly: the
+    // approach's imprint in the wake recovers over V tau_c and still pulls
+    // on the contact, by a few % in mu at V_hat = 100 with adhesion
+    // (doc/steady_state.md); a 1 % answer there needs a window of V tau_c
+    // (Sliding/Steady-state window) or the steady-state solver. The cap
+    // keeps sweeps affordable.
+    const double relaxation_length = std::min(V * tau_c, 4. * plan.L0);
+    plan.distance                  = prm.sliding.max_distance > 0
+                                       ? prm.sliding.max_distance
+                                       : 4. * plan.L0 + 30. * relaxation_length;
+    plan.window                    = prm.sliding.steady_window > 0
+                                       ? prm.sliding.steady_window
+                                       : std::max(plan.L0, 2. * relaxation_length);
+    plan.s0                        = committed.s;
+    if (plan.s0 + plan.distance + 2. * plan.L0 > prm.geometry.domain_width / 2)
+      throw Parameters::ExcInvalidInput(
+        "'Geometry/Domain width' = " +
+        std::to_string(prm.geometry.domain_width) + " is too small to slide " +
+        std::to_string(plan.distance) +
+        " eps and stay 2 L = " + std::to_string(2 * plan.L0) +
+        " eps away from the lateral boundary; it must be at least " +
+        std::to_string(2 * (plan.s0 + plan.distance + 2 * plan.L0)) +
+        " (or set 'Sliding/Maximum sliding distance')");
+  }
+
+
+  ContactProblem::SlideSample
+  ContactProblem::window_mean(const double from, const double to) const
+  {
+    SlideSample mean{};
+    std::size_t n = 0;
+    for (const auto &x : samples)
+      if (x.s > from && x.s <= to)
+        {
+          for (unsigned int k = 0; k < SlideSample::n_values; ++k)
+            mean.value[k] += x.value[k];
+          ++n;
+        }
+    for (double &v : mean.value)
+      v /= std::max<std::size_t>(n, 1);
+    return mean;
+  }
+
+
+  // Steady state: the means of the controlled quantity's conjugate (Fn or
+  // delta), Ft and L over the two halves of the last window of sliding
+  // differ by less than the tolerance relative to their size (or a floor
+  // for small values). Means, not single steps: with adhesion the contact
+  // edges jump from node to node, and Ft (eq. 2) flickers with the period
+  // of the finest cell by up to tens of percent where V tau is below it,
+  // about a steady mean.
+  bool
+  ContactProblem::window_is_steady() const
+  {
+    using Sample      = SlideSample;
+    const auto  &plan = slide_plan;
+    const double end  = committed.s;
+    if (end - plan.s0 < plan.window + plan.L0)
+      return false;
+    const Sample first  = window_mean(end - plan.window, end - plan.window / 2),
+                 second = window_mean(end - plan.window / 2, end);
+    const bool         force     = coupling.force_control();
+    const unsigned int judged[3] = {force ? Sample::delta
+                                          : Sample::normal_force,
+                                    Sample::tangential_force,
+                                    Sample::contact_length};
+    const double floor[3] = {force ? scales.eps : 1e-3 * scales.force,
+                             1e-3 *
+                                 std::abs(second.value[Sample::normal_force]) +
+                               1e-6 * scales.force,
+                             prm.mesh.finest_cell};
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const double size = std::max({floor[k],
+                                      std::abs(first.value[judged[k]]),
+                                      std::abs(second.value[judged[k]])});
+        if (std::abs(second.value[judged[k]] - first.value[judged[k]]) >
+            prm.sliding.steady_tolerance * size)
+          return false;
+      }
+    return true;
+  }
+
+
+  // The steady values are the means over the last window (over all of the
+  // sliding if it was shorter).
+  void
+  ContactProblem::report_slide(const bool steady)
+  {
+    using Sample = SlideSample;
+    const Sample mean =
+      window_mean(committed.s - slide_plan.window, committed.s);
+    SurfaceQuantities q = last_quantities;
+    q.normal_force      = mean.value[Sample::normal_force];
+    q.tangential_force  = mean.value[Sample::tangential_force];
+    q.profile_force     = mean.value[Sample::profile_force];
+    q.contact_length    = mean.value[Sample::contact_length];
+    steady_state_table.add_row(prm.sliding.speed,
+                               mean.value[Sample::delta],
+                               q,
+                               mean.value[Sample::dissipation_rate],
+                               steady,
+                               committed.s - slide_plan.s0,
+                               Parameters::SlidingSolver::transient,
+                               pcout);
+  }
+
+
+  // Phase 2 of the paper: the profile h(x - s) moves with s = V t over the
+  // fixed surface until Fn (or delta), Ft and L are steady over a window.
+  // A resumed run starts from the plan, the samples and the control of
+  // its checkpoint.
+  void
+  ContactProblem::slide(const bool resumed)
+  {
+    const double V  = prm.sliding.speed * scales.eps / scales.tau_ref;
+    const double ds = prm.sliding.increment * prm.mesh.finest_cell;
+    const double dt = ds / V;
+    if (!resumed)
+      {
+        plan_slide();
+        if (prm.sliding.control != Parameters::Control::displacement)
+          coupling.hold_force(last_quantities.normal_force,
+                              SurfaceCoupling::spring_stiffness_of(prm, scales),
+                              committed.delta);
+        samples.clear();
+        history_rows = 0;
+      }
+    open_history_table(resumed);
+    const auto &plan = slide_plan;
+    if (resumed && progress != nullptr)
+      progress->resume_case((committed.s - plan.s0) / plan.distance);
+    pcout << (resumed ? "Resuming sliding" : "Sliding")
+          << " at V_hat = " << prm.sliding.speed << " under "
+          << Parameters::to_string(prm.sliding.control) << " control: up to "
+          << plan.distance << " eps in steps of " << ds << " eps, steady over "
+          << plan.window << " eps" << std::endl;
+
+    bool         steady           = false;
+    unsigned int checkpointed_row = history_rows;
+    while (committed.s - plan.s0 < plan.distance - 1e-9 * ds && !steady)
+      {
+        LoadState target = committed;
+        target.s += ds;
+        target.time += dt;
+        target.dt = dt;
+        if (!advance_to(target, Phase::slide))
+          {
+            // The case ends with the last converged state as its row,
+            // flagged not steady; the reason is the exception's.
+            if (!samples.empty())
+              report_slide(false);
+            abort_run(target);
+          }
+        const auto &q = last_quantities;
+        samples.push_back({committed.s,
+                           {committed.delta,
+                            q.normal_force,
+                            q.tangential_force,
+                            q.profile_force,
+                            q.contact_length,
+                            last_dissipation_rate}});
+        steady = window_is_steady();
+        if (!steady && prm.output.checkpoint_every > 0 &&
+            history_rows >= checkpointed_row + prm.output.checkpoint_every)
+          {
+            write_checkpoint();
+            checkpointed_row = history_rows;
+          }
+      }
+
+    report_slide(steady);
+    write_profile("surface_profile_steady.csv");
+    pcout << (steady ? "Steady state" : "NO steady state") << " after "
+          << committed.s - plan.s0 << " eps" << std::endl;
+    coupling.hold_approach();
+  }
+
+
+  // The steady state solved directly in the indenter's frame, starting
+  // from the relaxed state of the approach (steady_state/solver.h). The
+  // triangulation then belongs to the steady-state solver: nothing of the
+  // transient solution is used afterwards.
+  void
+  ContactProblem::slide_steady()
+  {
+    SteadyStateSolver steady(
+      prm, scales, material, coupling, postprocessor, triangulation, timer);
+    steady.initialize(dof_handler, solution, committed.delta, committed.s);
+    if (prm.sliding.control != Parameters::Control::displacement)
+      coupling.hold_force(last_quantities.normal_force,
+                          SurfaceCoupling::spring_stiffness_of(prm, scales),
+                          committed.delta);
+    pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
+          << Parameters::to_string(prm.sliding.control)
+          << " control, by continuation from the relaxed state" << std::endl;
+    steady.run_stations(writer, steady_state_table, progress);
+  }
+} // namespace viscoslide

@@ -1,0 +1,493 @@
+// SteadyStateSolver: setup, the start from the relaxed state, Newton's
+// method and the continuation in speed and load.
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <viscoslide/mesh.h>
+#include <viscoslide/newton.h>
+#include <viscoslide/steady_state/solver.h>
+#include <viscoslide/steady_state/viscous_strain.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace viscoslide
+{
+  using ViscousStrain::components_per_arm;
+  using ViscousStrain::first_component;
+
+
+  SteadyStateSolver::SteadyStateSolver(
+    const Parameters::AllParameters         &prm,
+    const Scales                            &scales,
+    const ViscoelasticSolid                 &material,
+    SurfaceCoupling                         &coupling,
+    const SurfacePostprocessor              &postprocessor,
+    parallel::distributed::Triangulation<2> &triangulation,
+    TimerOutput                             &timer)
+    : prm(prm)
+    , scales(scales)
+    , material(material)
+    , coupling(coupling)
+    , postprocessor(postprocessor)
+    , triangulation(triangulation)
+    , timer(timer)
+    , mpi_communicator(triangulation.get_communicator())
+    , pcout(std::cout,
+            dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , n_strain_components(components_per_arm * material.n_arms())
+    , fe(FE_Q<dim>(2),
+         dim,
+         FE_DGQ<dim>(prm.sliding.viscous_strain_degree),
+         n_strain_components)
+    , dof_handler(triangulation)
+    , quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
+    , flux_quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
+  {
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == first_component)
+        strain_basis.push_back(i);
+  }
+
+
+  SteadyStateSolver::~SteadyStateSolver() = default;
+
+
+  void
+  SteadyStateSolver::setup_system()
+  {
+    TimerOutput::Scope t(timer, "steady: setup");
+    dof_handler.distribute_dofs(fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    VectorTools::interpolate_boundary_values(
+      dof_handler,
+      bottom_boundary,
+      Functions::ZeroFunction<dim>(fe.n_components()),
+      constraints,
+      fe.component_mask(FEValuesExtractors::Vector(0)));
+    constraints.close();
+
+    // Everything couples inside a cell; across faces only the upwind flux
+    // of each viscous-strain component.
+    const unsigned int           n_c = fe.n_components();
+    Table<2, DoFTools::Coupling> cell_coupling(n_c, n_c),
+      face_coupling(n_c, n_c);
+    for (unsigned int c = 0; c < n_c; ++c)
+      for (unsigned int d = 0; d < n_c; ++d)
+        {
+          cell_coupling(c, d) = DoFTools::always;
+          face_coupling(c, d) = (c == d && c >= first_component)
+                                  ? DoFTools::always
+                                  : DoFTools::none;
+        }
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_flux_sparsity_pattern(
+      dof_handler,
+      dsp,
+      constraints,
+      false,
+      cell_coupling,
+      face_coupling,
+      dealii::Utilities::MPI::this_mpi_process(mpi_communicator));
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    direct_solver.reset(); // it refers to the old matrix
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(system_rhs);
+    coupling.reinit(locally_owned_dofs);
+  }
+
+
+  // u is copied dof by dof (same Q2 element); eps_v is the cell-wise L2
+  // projection of eps(u), the relaxed state (V = 0) of the viscous strain.
+  void
+  SteadyStateSolver::initialize(const DoFHandler<dim>               &u_dofs,
+                                const TrilinosWrappers::MPI::Vector &u,
+                                const double                         delta,
+                                const double                         s)
+  {
+    setup_system();
+    this->delta = delta;
+    this->s     = s;
+    V_hat       = 0.;
+
+    const FiniteElement<dim> &u_fe = u_dofs.get_fe();
+    FEValues<dim> values(fe, quadrature, update_values | update_JxW_values);
+    FEValues<dim> u_values(u_fe, quadrature, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+
+    const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       u_local(u_fe.n_dofs_per_cell());
+    std::vector<SymmetricTensor<2, dim>> strain(n_q);
+    // The DG dofs of one component, and their local mass matrix.
+    std::vector<std::vector<unsigned int>> strain_dofs(n_strain_components);
+    for (unsigned int i = 0; i < n; ++i)
+      if (const unsigned int c = fe.system_to_component_index(i).first;
+          c >= first_component)
+        strain_dofs[c - first_component].push_back(i);
+    const unsigned int m = strain_dofs[0].size();
+    FullMatrix<double> mass(m, m);
+    Vector<double>     rhs(m), coefficients(m);
+
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const DoFHandler<dim>::active_cell_iterator u_cell(&triangulation,
+                                                             cell->level(),
+                                                             cell->index(),
+                                                             &u_dofs);
+          values.reinit(cell);
+          u_values.reinit(u_cell);
+          u_cell->get_dof_values(u, u_local);
+          u_values[displacement].get_function_symmetric_gradients(u, strain);
+          cell->get_dof_indices(dofs);
+
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto [base, k] = fe.system_to_base_index(i);
+              if (base.first == 0 && locally_owned_dofs.is_element(dofs[i]))
+                x(dofs[i]) =
+                  u_local(u_fe.component_to_system_index(base.second, k));
+            }
+          for (unsigned int c = 0; c < n_strain_components; ++c)
+            {
+              mass          = 0;
+              rhs           = 0;
+              const auto &d = strain_dofs[c];
+              for (unsigned int q = 0; q < n_q; ++q)
+                for (unsigned int a = 0; a < m; ++a)
+                  {
+                    const double wa = values.shape_value(d[a], q);
+                    rhs(a) += ViscousStrain::component(strain[q],
+                                                       c % components_per_arm) *
+                              wa * values.JxW(q);
+                    for (unsigned int b = 0; b < m; ++b)
+                      mass(a, b) +=
+                        wa * values.shape_value(d[b], q) * values.JxW(q);
+                  }
+              mass.gauss_jordan();
+              mass.vmult(coefficients, rhs);
+              for (unsigned int a = 0; a < m; ++a)
+                x(dofs[d[a]]) = coefficients(a);
+            }
+        }
+    x.compress(VectorOperation::insert);
+    constraints.distribute(x);
+    solution = x;
+    update_quantities();
+  }
+
+
+
+  // At a given speed and mesh the bulk operator (elasticity, arm and
+  // advection of eps_v) is linear: between Newton iterations only the
+  // surface traction terms change, on the few hundred dofs near the
+  // contact. So the factorization of the first Jacobian at a speed
+  // preconditions GMRES for the later ones, which then needs a few
+  // iterations instead of a new factorization (about 2 s at 60 000
+  // unknowns). A new factorization is made when GMRES does not converge
+  // within 'max_reuse_iterations', and whenever speed or mesh change.
+  void
+  SteadyStateSolver::solve_linear(const TrilinosWrappers::MPI::Vector &b,
+                                  TrilinosWrappers::MPI::Vector       &x)
+  {
+    constexpr unsigned int max_reuse_iterations = 30;
+    if (direct_solver && factorized_speed == V_hat && !factorization_current)
+      {
+        struct Factorization
+        {
+          TrilinosWrappers::SolverDirect *solver;
+          void
+          vmult(TrilinosWrappers::MPI::Vector       &dst,
+                const TrilinosWrappers::MPI::Vector &src) const
+          {
+            solver->solve(dst, src);
+          }
+        } preconditioner{direct_solver.get()};
+        SolverControl control(max_reuse_iterations, 1e-10 * b.l2_norm());
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+          control,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+            max_reuse_iterations + 2));
+        x = 0.;
+        try
+          {
+            gmres.solve(system_matrix, x, b, preconditioner);
+            krylov_iterations += control.last_step();
+            return;
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+          }
+      }
+    if (!factorization_current)
+      {
+        direct_solver         = factorize(system_matrix);
+        factorization_current = true;
+        factorized_speed      = V_hat;
+        ++factorizations;
+      }
+    direct_solver->solve(x, b);
+  }
+
+
+  // Under force control the bordered system of the transient solver
+
+  void
+  SteadyStateSolver::solve_newton_system()
+  {
+    TimerOutput::Scope t(timer, "steady: linear solve");
+    coupling.solve_bordered([this](const auto &b,
+                                   auto       &x) { solve_linear(b, x); },
+                            system_rhs,
+                            newton_update);
+    constraints.distribute(newton_update);
+  }
+
+
+  SurfaceCoupling::System
+  SteadyStateSolver::newton_system()
+  {
+    return {solution,
+            delta,
+            newton_update,
+            system_rhs,
+            [this](const bool with_matrix) { assemble(with_matrix); },
+            [this] { solve_newton_system(); }};
+  }
+
+
+  // Relaxation serves a speed step across which a contact edge jumps, e.g.
+  // the first one, where the trailing edge leaves the approach branch.
+  int
+  SteadyStateSolver::solve_newton_or_relax()
+  {
+    const int its = coupling.newton(newton_system(), pcout);
+    if (its >= 0)
+      return its;
+    TimerOutput::Scope t(timer, "steady: relaxation");
+    return coupling.relax(newton_system(), pcout);
+  }
+
+
+  bool
+  SteadyStateSolver::adapt_mesh()
+  {
+    TimerOutput::Scope t(timer, "steady: adapt mesh");
+    if (!coupling.flag_contact_edges(
+          triangulation, dof_handler, solution, delta, s))
+      return false;
+
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      transfer(dof_handler);
+    transfer.prepare_for_coarsening_and_refinement(solution);
+    triangulation.execute_coarsening_and_refinement();
+    setup_system();
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    transfer.interpolate(x);
+    constraints.distribute(x);
+    solution = x;
+    return true;
+  }
+
+
+  namespace
+  {
+    std::string
+    label(const std::string &name, const double value)
+    {
+      std::ostringstream os;
+      os << name << " = " << value;
+      return os.str();
+    }
+  } // namespace
+
+
+  // Solves the steady state after the speed or the load moved, from the
+  // last converged state: Newton, else pseudo-transient relaxation (a
+  // contact edge may have to jump: always at the first speed, where the
+  // trailing edge leaves the approach branch), then the mesh adaptation
+  // cycles. Returns the Newton iterations; -1 if the step failed (the
+  // caller restores the state it started from and shortens the step); -2
+  // if it failed on an adapted mesh, where that state no longer fits.
+  int
+  SteadyStateSolver::solve_step(const std::string &what)
+  {
+    const TrilinosWrappers::MPI::Vector backup(solution);
+    const double                        delta0 = delta;
+    int its = coupling.newton(newton_system(), pcout);
+    if (its < 0)
+      {
+        solution = backup;
+        delta    = delta0;
+        {
+          TimerOutput::Scope t(timer, "steady: relaxation");
+          its = coupling.relax(newton_system(), pcout);
+        }
+        if (its < 0)
+          return -1;
+        pcout << "  steady " << what << ": reached by relaxation" << std::endl;
+      }
+    const int more = resolve_on_adapted_meshes(
+      prm.mesh.max_adaptation_cycles,
+      [this] { return adapt_mesh(); },
+      [this] { return solve_newton_or_relax(); });
+    if (more < 0)
+      {
+        pcout << "Steady state: Newton failed at " << what
+              << " after adapting the mesh" << std::endl;
+        return -2;
+      }
+    its += more;
+    last_newton_iterations = its;
+    update_quantities();
+    pcout << "  steady V_hat " << std::setw(11) << V_hat << "  delta_hat "
+          << std::setw(10) << delta / scales.eps << "  F_hat " << std::setw(11)
+          << last_quantities.normal_force / scales.force << "  mu "
+          << std::setw(11)
+          << std::abs(last_quantities.tangential_force /
+                      last_quantities.normal_force)
+          << "  L_hat " << std::setw(11)
+          << last_quantities.contact_length / scales.R << "  Newton " << its
+          << "  dofs " << dof_handler.n_dofs() << "  factorizations "
+          << factorizations << "  GMRES " << krylov_iterations << std::endl;
+    return its;
+  }
+
+
+  bool
+  SteadyStateSolver::continue_to(const double                 target,
+                                 const std::function<void()> &on_converged)
+  {
+    // The first speed: relaxation length V tau a tenth of the finest cell,
+    // so that the relaxed start is close to its solution.
+    double first =
+      0.1 * prm.mesh.finest_cell / material.longest_relaxation_time();
+    const double largest_step = std::log(prm.sliding.continuation_factor);
+    double       step         = largest_step;
+    while (V_hat != target)
+      {
+        double next;
+        if (V_hat == 0.)
+          next = std::min(target, first);
+        else if (target > V_hat)
+          next = std::min(target, V_hat * std::exp(step));
+        else
+          next = std::max(target, V_hat * std::exp(-step));
+
+        const TrilinosWrappers::MPI::Vector backup(solution);
+        const double                        delta0 = delta, V0 = V_hat;
+        V_hat         = next;
+        const int its = solve_step(label("V_hat", next));
+        if (its == -2)
+          return false;
+        if (its < 0)
+          {
+            solution = backup;
+            delta    = delta0;
+            V_hat    = V0;
+            step *= 0.5;
+            if (V0 == 0.)
+              first *= std::exp(-step); // the first speed has no ratio
+            if (step < std::log(1.01))
+              {
+                pcout << "Steady state: Newton failed at V_hat = " << next
+                      << " even in steps of 1 %; last converged V_hat = " << V0
+                      << std::endl;
+                return false;
+              }
+            continue;
+          }
+        on_converged();
+        step = std::min(largest_step, 2. * step);
+      }
+    return true;
+  }
+
+
+  // Continuation in the controlled quantity at the current speed: F_n under
+  // force control, delta under displacement control. Steps are linear (the
+  // load may change sign): the whole way first, halved on failure down to
+  // a thousandth of it, doubled again after each success.
+  bool
+  SteadyStateSolver::continue_to_load(const double                 target,
+                                      const std::function<void()> &on_converged)
+  {
+    const bool   force      = coupling.force_control();
+    double      &controlled = force ? coupling.held_force() : delta;
+    const double unit       = force ? scales.force : scales.eps;
+    const double start = controlled, whole = std::abs(target - start);
+    double       step = whole;
+    while (controlled != target)
+      {
+        const double                        next = target > controlled
+                                                     ? std::min(target, controlled + step)
+                                                     : std::max(target, controlled - step);
+        const TrilinosWrappers::MPI::Vector backup(solution);
+        const double delta0 = delta, force0 = coupling.held_force();
+        controlled = next;
+        const std::string what =
+          label(force ? "F_hat" : "delta_hat", next / unit);
+        const int its = solve_step(what);
+        if (its == -2)
+          return false;
+        if (its < 0)
+          {
+            solution              = backup;
+            delta                 = delta0;
+            coupling.held_force() = force0;
+            step *= 0.5;
+            if (step < 1e-3 * whole)
+              {
+                pcout << "Steady state: Newton failed at " << what
+                      << " even in steps of a thousandth of the way from "
+                      << start / unit << std::endl;
+                return false;
+              }
+            continue;
+          }
+        on_converged();
+        step = std::min(whole, 2. * step);
+      }
+    return true;
+  }
+
+
+  void
+  SteadyStateSolver::update_quantities()
+  {
+    last_quantities = postprocessor.integrate(dof_handler, solution, delta, s);
+  }
+} // namespace viscoslide

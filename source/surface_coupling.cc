@@ -1,0 +1,265 @@
+#include <viscoslide/mesh.h>
+#include <viscoslide/surface_coupling.h>
+
+#include <cmath>
+
+namespace viscoslide
+{
+  SurfaceCoupling::SurfaceCoupling(const Parameters::AllParameters &prm,
+                                   const Scales                    &scales,
+                                   const InteractionLaw            &law,
+                                   const Indenter                  &indenter,
+                                   const SurfacePostprocessor &postprocessor,
+                                   MPI_Comm                    comm)
+    : prm(prm)
+    , scales(scales)
+    , traction_law(law)
+    , profile(indenter)
+    , postprocessor(postprocessor)
+    , comm(comm)
+    , quadrature(prm.adhesion.face_quadrature_points)
+  {
+  }
+
+
+  void
+  SurfaceCoupling::hold_approach()
+  {
+    force_controlled = false;
+    spring_stiffness = 0.;
+  }
+
+
+  void
+  SurfaceCoupling::hold_force(const double normal_force,
+                              const double spring,
+                              const double delta_of_spring)
+  {
+    force_controlled = true;
+    target_force     = normal_force;
+    spring_stiffness = spring;
+    spring_delta     = delta_of_spring;
+  }
+
+
+  double
+  SurfaceCoupling::spring_stiffness_of(const Parameters::AllParameters &prm,
+                                       const Scales                    &scales)
+  {
+    return prm.sliding.control == Parameters::Control::spring
+             ? prm.sliding.spring_stiffness * scales.force / scales.eps
+             : 0.;
+  }
+
+
+  void
+  SurfaceCoupling::LocalTerms::reinit(const unsigned int dofs_per_cell)
+  {
+    coupling.reinit(dofs_per_cell);
+    force = stiffness = abs_force = 0.;
+  }
+
+
+  void
+  SurfaceCoupling::reinit(const IndexSet &locally_owned_dofs)
+  {
+    delta_coupling.reinit(locally_owned_dofs, comm);
+  }
+
+
+  void
+  SurfaceCoupling::start_assembly()
+  {
+    if (force_controlled)
+      delta_coupling = 0;
+    force = delta_stiffness = abs_force = 0.;
+  }
+
+
+  void
+  SurfaceCoupling::add_face_terms(const FEFaceValuesBase<2> &face_values,
+                                  const VectorType          &solution,
+                                  const double               delta,
+                                  const double               s,
+                                  const bool                 with_matrix,
+                                  FullMatrix<double>        &cell_matrix,
+                                  Vector<double>            &cell_rhs,
+                                  LocalTerms                &local) const
+  {
+    const FEValuesExtractors::Scalar uy(1);
+    const unsigned int               n_q = face_values.n_quadrature_points;
+    const unsigned int               n   = face_values.dofs_per_cell;
+    std::vector<double>              u_y(n_q), anchor_u_y(n_q), phi_y(n);
+    face_values[uy].get_function_values(solution, u_y);
+    if (surface_damping > 0)
+      face_values[uy].get_function_values(relaxation_anchor, anchor_u_y);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double g         = gap(profile,
+                             scales.eps,
+                             delta,
+                             s,
+                             face_values.quadrature_point(q)[0],
+                             u_y[q]);
+        double       traction  = traction_law.traction(g);
+        const double dp_dg     = traction_law.derivative(g);
+        double       stiffness = dp_dg;
+        const double JxW       = face_values.JxW(q);
+        local.abs_force += std::abs(traction) * JxW;
+        local.force -= traction * JxW;
+        local.stiffness += dp_dg * JxW;
+        if (surface_damping > 0)
+          {
+            traction -= surface_damping * (u_y[q] - anchor_u_y[q]);
+            stiffness += surface_damping;
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          phi_y[i] = face_values[uy].value(i, q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            cell_rhs(i) += traction * phi_y[i] * JxW;
+            local.coupling(i) += dp_dg * phi_y[i] * JxW;
+            if (with_matrix)
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) += stiffness * phi_y[i] * phi_y[j] * JxW;
+          }
+      }
+  }
+
+
+  void
+  SurfaceCoupling::copy_local_to_global(
+    const LocalTerms                           &local,
+    const std::vector<types::global_dof_index> &dofs,
+    const AffineConstraints<double>            &constraints)
+  {
+    force += local.force;
+    delta_stiffness += local.stiffness;
+    abs_force += local.abs_force;
+    if (force_controlled)
+      constraints.distribute_local_to_global(local.coupling,
+                                             dofs,
+                                             delta_coupling);
+  }
+
+
+  void
+  SurfaceCoupling::finish_assembly(const double delta)
+  {
+    traction_scale = Utilities::MPI::sum(abs_force, comm);
+    if (!force_controlled)
+      return;
+    delta_coupling.compress(VectorOperation::add);
+    // Under spring control the force to hold follows delta.
+    force_mismatch = Utilities::MPI::sum(force, comm) - target_force -
+                     spring_stiffness * (spring_delta - delta);
+    delta_stiffness =
+      Utilities::MPI::sum(delta_stiffness, comm) + spring_stiffness;
+  }
+
+
+  double
+  SurfaceCoupling::residual_norm(const VectorType &rhs) const
+  {
+    const double r = rhs.l2_norm();
+    return force_controlled ? std::hypot(r, force_mismatch) : r;
+  }
+
+
+  void
+  SurfaceCoupling::solve_bordered(const LinearSolve &solve,
+                                  const VectorType  &rhs,
+                                  VectorType        &update)
+  {
+    VectorType x1;
+    x1.reinit(rhs);
+    solve(rhs, x1);
+    delta_update = 0.;
+    if (force_controlled)
+      {
+        VectorType x2;
+        x2.reinit(rhs);
+        solve(delta_coupling, x2);
+        delta_update = (-force_mismatch - (delta_coupling * x1)) /
+                       (delta_stiffness - (delta_coupling * x2));
+        x1.add(-delta_update, x2);
+      }
+    update = x1;
+  }
+
+
+  NewtonProblem
+  SurfaceCoupling::newton_problem(const System &system)
+  {
+    // One loaded finest cell, so that a contact-free state converges too.
+    const double floor = scales.sigma_max * prm.mesh.finest_cell;
+    // The line search's start lives here, in the layout of the update.
+    u0.reinit(system.update);
+    delta0 = system.delta;
+    NewtonProblem problem;
+    problem.assemble      = system.assemble;
+    problem.residual_norm = [this, &system] {
+      return residual_norm(system.rhs);
+    };
+    problem.tolerance = [this, floor] {
+      return prm.solver.newton_tolerance * (traction_scale + floor);
+    };
+    problem.compute_update = system.compute_update;
+    return with_iterate(problem,
+                        {system.solution,
+                         system.delta,
+                         system.update,
+                         delta_update,
+                         surface_damping,
+                         relaxation_anchor},
+                        u0,
+                        delta0);
+  }
+
+
+  int
+  SurfaceCoupling::newton(const System &system, ConditionalOStream &out)
+  {
+    return viscoslide::newton(newton_problem(system),
+                              prm.solver.max_newton_iterations,
+                              prm.solver.line_search,
+                              prm.solver.verbose,
+                              out);
+  }
+
+
+  int
+  SurfaceCoupling::relax(const System &system, ConditionalOStream &out)
+  {
+    relaxation_anchor.reinit(system.solution);
+    const int steps =
+      viscoslide::relax(newton_problem(system),
+                        16. * scales.dgamma / (scales.eps * scales.eps),
+                        0.5 * scales.eps,
+                        prm.solver.max_relaxation_steps,
+                        prm.solver.verbose,
+                        out);
+    surface_damping = 0.;
+    return steps;
+  }
+
+
+  bool
+  SurfaceCoupling::flag_contact_edges(
+    parallel::distributed::Triangulation<2> &triangulation,
+    const DoFHandler<2>                     &dof_handler,
+    const VectorType                        &solution,
+    const double                             delta,
+    const double                             s) const
+  {
+    auto edges = postprocessor.faces_in_gap_band(dof_handler,
+                                                 solution,
+                                                 delta,
+                                                 s,
+                                                 prm.mesh.edge_gap_low,
+                                                 prm.mesh.edge_gap_high);
+    if (edges.empty()) // no contact yet: resolve the region under the apex
+      edges.emplace_back(s, s);
+    return flag_cells_near_edges(triangulation, edges, prm);
+  }
+} // namespace viscoslide

@@ -1,0 +1,134 @@
+#include <deal.II/numerics/data_out_faces.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <viscoslide/mesh.h>
+#include <viscoslide/surface_fields.h>
+
+namespace viscoslide
+{
+  namespace
+  {
+    // Pressure and gap from u_y and x.
+    class SurfaceFields : public DataPostprocessor<2>
+    {
+    public:
+      SurfaceFields(const InteractionLaw &law,
+                    const Indenter       &indenter,
+                    const Scales         &scales,
+                    const double          delta,
+                    const double          s)
+        : law(law)
+        , indenter(indenter)
+        , scales(scales)
+        , delta(delta)
+        , s(s)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>>              &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          {
+            const double g = gap(indenter,
+                                 scales.eps,
+                                 delta,
+                                 s,
+                                 inputs.evaluation_points[q][0],
+                                 inputs.solution_values[q][1]);
+            computed[q](0) = -law.traction(g) / scales.sigma_max;
+            computed[q](1) = g / scales.eps;
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"p_hat", "gap_over_eps"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values | update_quadrature_points;
+      }
+
+    private:
+      const InteractionLaw &law;
+      const Indenter       &indenter;
+      const Scales         &scales;
+      const double          delta, s;
+    };
+
+    // DataOutFaces over the locally owned faces of the top surface only.
+    class TopSurfaceDataOut : public DataOutFaces<2>
+    {
+    public:
+      TopSurfaceDataOut()
+        : DataOutFaces<2>(true)
+      {
+      }
+
+      FaceDescriptor
+      first_face() override
+      {
+        for (const auto &cell : this->triangulation->active_cell_iterators())
+          if (cell->is_locally_owned())
+            if (const auto f = top_face(cell);
+                f != numbers::invalid_unsigned_int)
+              return {cell, f};
+        return {};
+      }
+
+      FaceDescriptor
+      next_face(const FaceDescriptor &face) override
+      {
+        auto cell = face.first;
+        for (++cell; cell != this->triangulation->end(); ++cell)
+          if (cell->is_active() && cell->is_locally_owned())
+            if (const auto f = top_face(cell);
+                f != numbers::invalid_unsigned_int)
+              return {cell, f};
+        return {};
+      }
+
+    private:
+      static unsigned int
+      top_face(const Triangulation<2>::cell_iterator &cell)
+      {
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == top_boundary)
+            return f;
+        return numbers::invalid_unsigned_int;
+      }
+    };
+  } // namespace
+
+
+  void
+  write_surface_fields(OutputWriter                        &writer,
+                       const std::string                   &name,
+                       const DoFHandler<2>                 &dof_handler,
+                       const TrilinosWrappers::MPI::Vector &solution,
+                       const InteractionLaw                &law,
+                       const Indenter                      &indenter,
+                       const Scales                        &scales,
+                       const double                         delta,
+                       const double                         s,
+                       const unsigned int                   counter,
+                       const double                         time)
+  {
+    const SurfaceFields fields(law, indenter, scales, delta, s);
+    TopSurfaceDataOut   surface_out;
+    surface_out.attach_dof_handler(dof_handler);
+    surface_out.add_data_vector(solution, fields);
+    surface_out.build_patches(2);
+    writer.write(static_cast<const DataOutFaces<2> &>(surface_out),
+                 name,
+                 counter,
+                 time);
+  }
+} // namespace viscoslide

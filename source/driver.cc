@@ -349,59 +349,299 @@ namespace viscoslide
   } // namespace
 
 
+  namespace
+  {
+    // Reads the file and every case of its sweep. Every case is checked
+    // before any runs: a bad value in a list must not surface hours into a
+    // sweep. Returns false (after saying why) on bad input.
+    bool
+    read_cases(const std::string &input,
+               std::vector<Case> &cases,
+               fs::path          &top,
+               MPI_Comm           comm)
+    {
+      const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
+      std::string in_case;
+      auto        report = [&](const auto &print) {
+        if (!root)
+          return;
+        std::cerr << "viscoslide: error in parameter file '" << input << "'"
+                  << (in_case.empty() ? "" : ", sweep case " + in_case)
+                  << ":\n";
+        print();
+      };
+      try
+        {
+          if (!std::ifstream(input))
+            throw Parameters::ExcInvalidInput("cannot read parameter file '" +
+                                              input + "'");
+          Case base;
+          read_case(input, base);
+          cases = make_cases(base.parameters);
+          top   = base.parameters.output.directory;
+          for (auto &c : cases)
+            {
+              in_case = c.name;
+              if (!c.name.empty())
+                c.settings.push_back(
+                  {"Output", "Output directory", (top / c.name).string()});
+              read_case(input, c);
+            }
+        }
+      catch (ExceptionBase &e) // ParameterHandler's: show only its message
+        {
+          report([&] { e.print_info(std::cerr); });
+          return false;
+        }
+      catch (std::exception &e)
+        {
+          report([&] { std::cerr << e.what() << std::endl; });
+          return false;
+        }
+      return true;
+    }
+
+
+    // A single run: its files go straight into the Output directory.
+    int
+    run_single(const Case &c, const RunOptions &options, MPI_Comm comm)
+    {
+      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+      const fs::path dir(c.parameters.output.directory);
+      const bool resume = options.resume && ContactProblem::has_checkpoint(dir);
+      try
+        {
+          if (resume)
+            {
+              if (!ran_with(dir, c))
+                throw std::runtime_error(
+                  "cannot resume in '" + dir.string() +
+                  "': its run had other parameters (parameters.prm)");
+            }
+          else
+            {
+              if (options.resume && fs::exists(dir / "parameters.prm"))
+                throw std::runtime_error(
+                  "nothing to resume in '" + dir.string() +
+                  "': it holds no checkpoint (the run finished, or was "
+                  "killed before its first checkpoint); rerun it with "
+                  "--overwrite");
+              OutputWriter::prepare_directory(dir.string(),
+                                              options.overwrite,
+                                              comm);
+              write_provenance(c, comm);
+            }
+        }
+      catch (std::exception &e)
+        {
+          if (root)
+            std::cerr << "viscoslide: " << e.what() << std::endl;
+          return 1;
+        }
+      if (root)
+        std::cout << version_string() << ", "
+                  << Utilities::MPI::n_mpi_processes(comm)
+                  << " MPI process(es)\n";
+      Progress          progress(1, 1);
+      const std::string failure = run_case(c, progress, comm, resume);
+      if (root)
+        try
+          {
+            write_status(dir, failure);
+          }
+        catch (std::exception &e)
+          {
+            std::cerr << "viscoslide: " << e.what() << std::endl;
+          }
+      if (!failure.empty() && root)
+        std::cerr << "\nviscoslide: run failed:\n" << failure << std::endl;
+      return failure.empty() ? 0 : 2;
+    }
+
+
+    // Which cases of a sweep run: those never finished, and those the user
+    // asked to redo; a finished case whose parameters differ from the
+    // file's is refused, so that one table never mixes two studies. Also
+    // keeps the sweep's file as sweep.prm. Returns the error, if any.
+    std::string
+    select_cases(const std::string       &input,
+                 const std::vector<Case> &cases,
+                 const fs::path          &top,
+                 const RunOptions        &options,
+                 std::vector<char>       &to_run)
+    {
+      std::error_code ec;
+      fs::create_directories(top, ec);
+      if (ec)
+        return "cannot create output directory '" + top.string() +
+               "': " + ec.message();
+      using Redo = RunOptions::Redo;
+      for (std::size_t k = 0; k < cases.size(); ++k)
+        {
+          const fs::path dir    = top / cases[k].name;
+          const Status   status = read_status(dir);
+          if (status.state.empty())
+            continue; // never run, or interrupted: run (again)
+          const bool same = ran_with(dir, cases[k]);
+          if (!same && !options.overwrite)
+            return "case folder '" + dir.string() +
+                   "' holds a case run with other parameters; choose "
+                   "another 'Output/Output directory' or run with "
+                   "--overwrite";
+          to_run[k] =
+            !same || options.overwrite || options.redo == Redo::all ||
+            (options.redo == Redo::failed && status.state == "failed");
+        }
+      try
+        {
+          const std::string text =
+            "# " + version_string() + "\n" + read_file(input);
+          if (read_file(top / "sweep.prm") != text)
+            write_atomically(top / "sweep.prm", text);
+        }
+      catch (std::exception &e)
+        {
+          return e.what();
+        }
+      return "";
+    }
+
+
+    // Case k of a sweep in its own folder; an interrupted case resumes
+    // from its checkpoint if asked to and its parameters are those of the
+    // file, otherwise it starts again.
+    void
+    run_sweep_case(const std::size_t        k,
+                   const std::vector<Case> &cases,
+                   const fs::path          &top,
+                   const RunOptions        &options,
+                   Progress                &progress,
+                   MPI_Comm                 comm)
+    {
+      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+      const Case    &c    = cases[k];
+      const fs::path dir  = top / c.name;
+      progress.start_case(k + 1, c.name);
+      const bool resume = options.resume && read_status(dir).state.empty() &&
+                          ContactProblem::has_checkpoint(dir) &&
+                          ran_with(dir, c);
+      std::string failure;
+      try
+        {
+          std::error_code ec; // prepare_directory() reports the failure
+          if (root && !resume)
+            fs::remove_all(dir, ec);
+          if (!resume)
+            {
+              OutputWriter::prepare_directory(dir.string(), true, comm);
+              write_provenance(c, comm);
+            }
+        }
+      catch (std::exception &e)
+        {
+          failure = e.what();
+        }
+      failure = Utilities::MPI::broadcast(comm, failure, 0);
+      if (root)
+        {
+          std::cout << "\n=== case " << k + 1 << "/" << cases.size() << " "
+                    << c.name << ":";
+          for (const auto &s : c.settings)
+            if (s.section != "Output" && !s.value.empty())
+              std::cout << " " << s.entry << " = " << s.value << ";";
+          std::cout << std::endl;
+        }
+      if (failure.empty())
+        failure = run_case(c, progress, comm, resume);
+      if (!root)
+        return;
+      try
+        {
+          write_status(dir, failure);
+          write_sweep_table(top, cases);
+        }
+      catch (std::exception &e)
+        {
+          std::cerr << "viscoslide: " << e.what() << std::endl;
+        }
+      std::cout << "case " << k + 1 << "/" << cases.size() << " " << c.name
+                << ": " << (failure.empty() ? "done" : "FAILED: " + failure)
+                << "  [" << progress.report(1.) << "]" << std::endl;
+    }
+
+
+    int
+    run_sweep(const std::string       &input,
+              const std::vector<Case> &cases,
+              const fs::path          &top,
+              const RunOptions        &options,
+              MPI_Comm                 comm)
+    {
+      const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+      std::vector<char> to_run(cases.size(), 1);
+      std::string       error;
+      if (root)
+        error = select_cases(input, cases, top, options, to_run);
+      error  = Utilities::MPI::broadcast(comm, error, 0);
+      to_run = Utilities::MPI::broadcast(comm, to_run, 0);
+      if (!error.empty())
+        {
+          if (root)
+            std::cerr << "viscoslide: " << error << std::endl;
+          return 1;
+        }
+
+      const unsigned int n_to_run = std::count(to_run.begin(), to_run.end(), 1);
+      if (root)
+        std::cout << version_string() << ", "
+                  << Utilities::MPI::n_mpi_processes(comm)
+                  << " MPI process(es)\nSweep of " << cases.size()
+                  << " cases into '" << top.string() << "': " << n_to_run
+                  << " to run, " << cases.size() - n_to_run
+                  << " finished earlier\n";
+      Progress progress(cases.size(), n_to_run);
+      for (std::size_t k = 0; k < cases.size(); ++k)
+        if (to_run[k])
+          run_sweep_case(k, cases, top, options, progress, comm);
+        else if (root)
+          std::cout << "case " << k + 1 << "/" << cases.size() << " "
+                    << cases[k].name << ": "
+                    << read_status(top / cases[k].name).state
+                    << " earlier, skipped\n";
+
+      // The table also when every case was skipped, and the verdict.
+      std::string failed;
+      if (root)
+        {
+          write_sweep_table(top, cases);
+          for (const auto &c : cases)
+            if (read_status(top / c.name).state != "done")
+              failed += " " + c.name;
+          std::cout << "\nSweep finished: " << top.string()
+                    << "/steady_state.csv" << std::endl;
+          if (!failed.empty())
+            std::cerr << "viscoslide: these cases failed (reasons in "
+                      << (top / "steady_state.csv").string() << "):" << failed
+                      << std::endl;
+        }
+      failed = Utilities::MPI::broadcast(comm, failed, 0);
+      return failed.empty() ? 0 : 2;
+    }
+  } // namespace
+
+
   int
   run_parameter_file(const std::string &input,
                      const RunOptions  &options,
                      MPI_Comm           comm)
   {
-    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
     std::vector<Case> cases;
-    std::string       in_case;
     fs::path          top; // the Output directory
-    try
-      {
-        if (!std::ifstream(input))
-          throw Parameters::ExcInvalidInput("cannot read parameter file '" +
-                                            input + "'");
-        Case base;
-        read_case(input, base);
-        cases = make_cases(base.parameters);
-        // Every case is checked before any runs: a bad value in a list
-        // must not surface hours into a sweep.
-        top = base.parameters.output.directory;
-        for (auto &c : cases)
-          {
-            in_case = c.name;
-            if (!c.name.empty())
-              c.settings.push_back(
-                {"Output", "Output directory", (top / c.name).string()});
-            read_case(input, c);
-          }
-      }
-    catch (ExceptionBase &e) // ParameterHandler's: show only its message
-      {
-        if (root)
-          {
-            std::cerr << "viscoslide: error in parameter file '" << input << "'"
-                      << (in_case.empty() ? "" : ", sweep case " + in_case)
-                      << ":\n";
-            e.print_info(std::cerr);
-          }
-        return 1;
-      }
-    catch (std::exception &e)
-      {
-        if (root)
-          std::cerr << "viscoslide: error in parameter file '" << input << "'"
-                    << (in_case.empty() ? "" : ", sweep case " + in_case)
-                    << ":\n"
-                    << e.what() << std::endl;
-        return 1;
-      }
-
+    if (!read_cases(input, cases, top, comm))
+      return 1;
     if (options.dry_run)
       {
-        if (root)
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
           for (const auto &c : cases)
             std::cout << (top / c.name).string() << " "
                       << std::hash<std::string>()(
@@ -409,201 +649,8 @@ namespace viscoslide
                       << std::endl;
         return 0;
       }
-
-    // A single run: its files go straight into the Output directory.
     if (cases.size() == 1 && cases[0].name.empty())
-      {
-        const Case    &c = cases[0];
-        const fs::path dir(c.parameters.output.directory);
-        const bool     resume =
-          options.resume && ContactProblem::has_checkpoint(dir);
-        try
-          {
-            if (resume)
-              {
-                if (!ran_with(dir, c))
-                  throw std::runtime_error(
-                    "cannot resume in '" + dir.string() +
-                    "': its run had other parameters (parameters.prm)");
-              }
-            else
-              {
-                if (options.resume && fs::exists(dir / "parameters.prm"))
-                  throw std::runtime_error(
-                    "nothing to resume in '" + dir.string() +
-                    "': it holds no checkpoint (the run finished, or was "
-                    "killed before its first checkpoint); rerun it with "
-                    "--overwrite");
-                OutputWriter::prepare_directory(dir.string(),
-                                                options.overwrite,
-                                                comm);
-                write_provenance(c, comm);
-              }
-          }
-        catch (std::exception &e)
-          {
-            if (root)
-              std::cerr << "viscoslide: " << e.what() << std::endl;
-            return 1;
-          }
-        if (root)
-          std::cout << version_string() << ", "
-                    << Utilities::MPI::n_mpi_processes(comm)
-                    << " MPI process(es)\n";
-        Progress          progress(1, 1);
-        const std::string failure = run_case(c, progress, comm, resume);
-        if (root)
-          try
-            {
-              write_status(dir, failure);
-            }
-          catch (std::exception &e)
-            {
-              std::cerr << "viscoslide: " << e.what() << std::endl;
-            }
-        if (!failure.empty() && root)
-          std::cerr << "\nviscoslide: run failed:\n" << failure << std::endl;
-        return failure.empty() ? 0 : 2;
-      }
-
-    // A sweep. Which cases run: those never finished, and those the user
-    // asked to redo; a finished case whose parameters differ from the
-    // file's is refused, so that one table never mixes two studies.
-    std::vector<char> to_run(cases.size(), 1);
-    std::string       error;
-    if (root)
-      {
-        std::error_code ec;
-        fs::create_directories(top, ec);
-        if (ec)
-          error = "cannot create output directory '" + top.string() +
-                  "': " + ec.message();
-        for (std::size_t k = 0; k < cases.size() && error.empty(); ++k)
-          {
-            const fs::path dir    = top / cases[k].name;
-            const Status   status = read_status(dir);
-            if (status.state.empty())
-              continue; // never run, or interrupted: run (again)
-            const bool same = ran_with(dir, cases[k]);
-            if (!same && !options.overwrite)
-              error = "case folder '" + dir.string() +
-                      "' holds a case run with other parameters; choose "
-                      "another 'Output/Output directory' or run with "
-                      "--overwrite";
-            to_run[k] = !same || options.overwrite || options.redo == "all" ||
-                        (options.redo == "failed" && status.state == "failed");
-          }
-        if (error.empty())
-          try
-            {
-              const std::string text =
-                "# " + version_string() + "\n" + read_file(input);
-              if (read_file(top / "sweep.prm") != text)
-                write_atomically(top / "sweep.prm", text);
-            }
-          catch (std::exception &e)
-            {
-              error = e.what();
-            }
-      }
-    error  = Utilities::MPI::broadcast(comm, error, 0);
-    to_run = Utilities::MPI::broadcast(comm, to_run, 0);
-    if (!error.empty())
-      {
-        if (root)
-          std::cerr << "viscoslide: " << error << std::endl;
-        return 1;
-      }
-
-    const unsigned int n_to_run = std::count(to_run.begin(), to_run.end(), 1);
-    if (root)
-      std::cout << version_string() << ", "
-                << Utilities::MPI::n_mpi_processes(comm)
-                << " MPI process(es)\nSweep of " << cases.size()
-                << " cases into '" << top.string() << "': " << n_to_run
-                << " to run, " << cases.size() - n_to_run
-                << " finished earlier\n";
-    Progress progress(cases.size(), n_to_run);
-    for (std::size_t k = 0; k < cases.size(); ++k)
-      {
-        const Case    &c   = cases[k];
-        const fs::path dir = top / c.name;
-        if (!to_run[k])
-          {
-            if (root)
-              std::cout << "case " << k + 1 << "/" << cases.size() << " "
-                        << c.name << ": " << read_status(dir).state
-                        << " earlier, skipped\n";
-            continue;
-          }
-        progress.start_case(k + 1, c.name);
-        // An interrupted case resumes from its checkpoint if asked to and
-        // its parameters are those of the file; otherwise it starts again.
-        const bool resume = options.resume && read_status(dir).state.empty() &&
-                            ContactProblem::has_checkpoint(dir) &&
-                            ran_with(dir, c);
-        std::string failure;
-        try
-          {
-            std::error_code ec; // prepare_directory() reports the failure
-            if (root && !resume)
-              fs::remove_all(dir, ec);
-            if (!resume)
-              {
-                OutputWriter::prepare_directory(dir.string(), true, comm);
-                write_provenance(c, comm);
-              }
-          }
-        catch (std::exception &e)
-          {
-            failure = e.what();
-          }
-        failure = Utilities::MPI::broadcast(comm, failure, 0);
-        if (root)
-          {
-            std::cout << "\n=== case " << k + 1 << "/" << cases.size() << " "
-                      << c.name << ":";
-            for (const auto &s : c.settings)
-              if (s.section != "Output" && !s.value.empty())
-                std::cout << " " << s.entry << " = " << s.value << ";";
-            std::cout << std::endl;
-          }
-        if (failure.empty())
-          failure = run_case(c, progress, comm, resume);
-        if (root)
-          {
-            try
-              {
-                write_status(dir, failure);
-                write_sweep_table(top, cases);
-              }
-            catch (std::exception &e)
-              {
-                std::cerr << "viscoslide: " << e.what() << std::endl;
-              }
-            std::cout << "case " << k + 1 << "/" << cases.size() << " "
-                      << c.name << ": "
-                      << (failure.empty() ? "done" : "FAILED: " + failure)
-                      << "  [" << progress.report(1.) << "]" << std::endl;
-          }
-      }
-
-    // The table also when every case was skipped, and the verdict.
-    std::string failed;
-    if (root)
-      {
-        write_sweep_table(top, cases);
-        for (const auto &c : cases)
-          if (read_status(top / c.name).state != "done")
-            failed += " " + c.name;
-        std::cout << "\nSweep finished: " << top.string() << "/steady_state.csv"
-                  << std::endl;
-        if (!failed.empty())
-          std::cerr << "viscoslide: these cases failed (reasons in "
-                    << (top / "steady_state.csv").string() << "):" << failed
-                    << std::endl;
-      }
-    failed = Utilities::MPI::broadcast(comm, failed, 0);
-    return failed.empty() ? 0 : 2;
+      return run_single(cases[0], options, comm);
+    return run_sweep(input, cases, top, options, comm);
   }
 } // namespace viscoslide

@@ -90,7 +90,8 @@ main(int argc, char *argv[])
                 std::cerr << "viscoslide: --redo needs 'failed' or 'all'\n";
               return 1;
             }
-          options.redo = args[++i];
+          options.redo = args[++i] == "all" ? RunOptions::Redo::all
+                                            : RunOptions::Redo::failed;
         }
       else if (!args[i].empty() && args[i][0] == '-')
         {

@@ -382,7 +382,7 @@ namespace viscoslide
                           "lennard-jones|repulsive|exponential|dugdale"),
                         "Surface traction-gap law on the top boundary, each "
                         "with work of separation dgamma (doc/model.md). "
-                        "'lennard-jones': the 3-9 law of physics.md. "
+                        "'lennard-jones': the 3-9 law of doc/model.md. "
                         "'repulsive': only its repulsive branch (g < eps), "
                         "rounded to zero slope over [0.98 eps, eps] so that "
                         "Newton converges, i.e. frictionless contact "

@@ -19,8 +19,13 @@ namespace viscoslide
     // Continue a killed run, or the unfinished cases of a sweep, from the
     // checkpoint in its folder (parameters must be unchanged).
     bool resume = false;
-    // Which finished cases of a sweep run again: "none", "failed", "all".
-    std::string redo = "none";
+    // Which finished cases of a sweep run again.
+    enum class Redo
+    {
+      none,
+      failed,
+      all
+    } redo = Redo::none;
     // Check the file and list the cases (folder and checksum of their
     // parameters) without running or writing anything.
     bool dry_run = false;

@@ -153,9 +153,9 @@ namespace viscoslide
                   double                             R,
                   double                             domain_width);
 
-  // The gap of physics.md, g = eps + h(x - s) - delta - u_y, for a surface
-  // point at x displaced by u_y, with the indenter at approach delta and
-  // lateral position s.
+  // The gap of doc/conventions.md, g = eps + h(x - s) - delta - u_y, for a
+  // surface point at x displaced by u_y, with the indenter at approach
+  // delta and lateral position s.
   inline double
   gap(const Indenter &indenter,
       const double    eps,

@@ -4,7 +4,7 @@
 //     E(t) = E0 + sum_k E_k exp(-t/tau_k),   sum_k E_k = Einf - E0.
 // One arm is the paper's standard linear solid. The arm stresses h_k are
 // the history variables; their out-of-plane components are kept because
-// the dissipation depends on them (physics.md).
+// the dissipation depends on them (doc/model.md, Standard linear solid).
 #ifndef viscoslide_material_h
 #define viscoslide_material_h
 
@@ -61,7 +61,7 @@ namespace viscoslide
 
     // Exact exponential integration of dh_k/dt + h_k/tau_k = C_k : deps/dt
     // over a step of length dt with the strain varying linearly: the
-    // factors a and gamma of physics.md, one pair per arm. dt = infinity
+    // factors a and gamma of doc/model.md, one pair per arm. dt = infinity
     // is the fully relaxed limit (a = gamma = 0); dt = 0 the instantaneous
     // one (a = gamma = 1).
     struct StepFactors

@@ -26,6 +26,8 @@ namespace viscoslide
     std::vector<double>       ell, row_scale;
     SymmetricTensor<4, 2>     C0, C_sum;
     std::vector<unsigned int> component; // of each local dof
+    // The local dofs of each strain component.
+    std::vector<std::vector<unsigned int>> strain_dofs;
   };
 
 
@@ -44,6 +46,16 @@ namespace viscoslide
                          flux_quadrature,
                          update_values | update_normal_vectors |
                            update_JxW_values)
+      , strain(quadrature.size())
+      , projected_strain(quadrature.size())
+      , grad_phi_q(quadrature.size())
+      , projected_grad_q(quadrature.size())
+      , grad_phi(quadrature.size(), fe.n_dofs_per_cell())
+      , projected_grad(quadrature.size(), fe.n_dofs_per_cell())
+      , e(fe.n_components() - first_component,
+          std::vector<double>(quadrature.size()))
+      , eps_v(e.size() / components_per_arm)
+      , C_arm_i(e.size() / components_per_arm)
     {
     }
 
@@ -60,8 +72,9 @@ namespace viscoslide
     FEInterfaceValues<2>               interface_values;
     std::vector<SymmetricTensor<2, 2>> strain, projected_strain, grad_phi_q,
       projected_grad_q;
-    Table<2, SymmetricTensor<2, 2>>  grad_phi, projected_grad;
-    std::vector<std::vector<double>> e;
+    Table<2, SymmetricTensor<2, 2>>    grad_phi, projected_grad;
+    std::vector<std::vector<double>>   e; // eps_v of each component
+    std::vector<SymmetricTensor<2, 2>> eps_v, C_arm_i; // of each arm
   };
 
 
@@ -127,8 +140,14 @@ namespace viscoslide
     coefficients.C_sum = material.arm_stiffness(0);
     for (unsigned int a = 1; a < material.n_arms(); ++a)
       coefficients.C_sum += material.arm_stiffness(a);
+    coefficients.strain_dofs.resize(n_strain_components);
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      coefficients.component.push_back(fe.system_to_component_index(i).first);
+      {
+        const unsigned int c = fe.system_to_component_index(i).first;
+        coefficients.component.push_back(c);
+        if (c >= first_component)
+          coefficients.strain_dofs[c - first_component].push_back(i);
+      }
 
     using Iterator = DoFHandler<dim>::active_cell_iterator;
     const auto cell_worker =
@@ -164,20 +183,22 @@ namespace viscoslide
         constraints.distribute_local_to_global(copy.cell_rhs,
                                                copy.dofs,
                                                system_rhs);
+      // The viscous strain is discontinuous and free of constraints, so
+      // the flux blocks go to the system directly. The flux is linear in
+      // eps_v: its residual is the block times the upwind values.
+      Vector<double> upwind_values, rhs;
       for (const auto &face : copy.faces)
         {
-          // The flux is linear in eps_v: its residual is the matrix times
-          // the joint values.
-          Vector<double> rhs(face.rows.size());
-          for (unsigned int i = 0; i < face.rows.size(); ++i)
-            for (unsigned int j = 0; j < face.columns.size(); ++j)
-              rhs(i) -= face.matrix(i, j) * solution(face.columns[j]);
-          constraints.distribute_local_to_global(rhs, face.rows, system_rhs);
+          upwind_values.reinit(face.columns.size());
+          rhs.reinit(face.rows.size());
+          solution.extract_subvector_to(face.columns.begin(),
+                                        face.columns.end(),
+                                        upwind_values.begin());
+          face.matrix.vmult(rhs, upwind_values);
+          rhs *= -1.;
+          system_rhs.add(face.rows, rhs);
           if (with_matrix)
-            constraints.distribute_local_to_global(face.matrix,
-                                                   face.rows,
-                                                   face.columns,
-                                                   system_matrix);
+            system_matrix.add(face.rows, face.columns, face.matrix);
         }
     };
 
@@ -219,8 +240,10 @@ namespace viscoslide
     AssemblyScratch                             &scratch,
     AssemblyCopy                                &copy) const
   {
-    const auto &[ell, row_scale, C0, C_sum, component] = coefficients;
-    const FEValues<dim>             &fe_values         = scratch.fe_values;
+    const auto &ell = coefficients.ell, &row_scale = coefficients.row_scale;
+    const auto &C0 = coefficients.C0, &C_sum = coefficients.C_sum;
+    const auto &component                      = coefficients.component;
+    const FEValues<dim>             &fe_values = scratch.fe_values;
     const FEValuesExtractors::Vector displacement(0);
     const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
     const unsigned int n_arms           = material.n_arms();
@@ -228,11 +251,6 @@ namespace viscoslide
     auto              &projected_strain = scratch.projected_strain;
     auto              &grad_phi_q       = scratch.grad_phi_q;
     auto              &projected_grad_q = scratch.projected_grad_q;
-    for (auto *v : {&strain, &projected_strain, &grad_phi_q, &projected_grad_q})
-      v->resize(n_q);
-    scratch.grad_phi.reinit(n_q, n);
-    scratch.projected_grad.reinit(n_q, n);
-    scratch.e.assign(n_strain_components, std::vector<double>(n_q));
 
     copy.cell_matrix = 0;
     copy.cell_rhs    = 0;
@@ -262,7 +280,7 @@ namespace viscoslide
             }
         }
 
-    std::vector<SymmetricTensor<2, dim>> eps_v(n_arms), C_arm_i(n_arms);
+    auto &eps_v = scratch.eps_v, &C_arm_i = scratch.C_arm_i;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         SymmetricTensor<2, dim> sigma = C0 * strain[q];
@@ -361,10 +379,10 @@ namespace viscoslide
       return;
     scratch.interface_values.reinit(cell, face_no);
     const auto         &values = scratch.interface_values.get_fe_face_values(0);
-    const auto         &component = coefficients.component;
     std::vector<double> e(values.n_quadrature_points);
     for (unsigned int c = 0; c < n_strain_components; ++c)
       {
+        const auto &dofs = coefficients.strain_dofs[c];
         values[FEValuesExtractors::Scalar(first_component + c)]
           .get_function_values(solution, e);
         for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
@@ -375,17 +393,15 @@ namespace viscoslide
               continue;
             const double scale =
               coefficients.row_scale[c] * beta_n * values.JxW(q);
-            for (unsigned int i = 0; i < component.size(); ++i)
-              if (component[i] == first_component + c)
-                {
-                  const double w = values.shape_value(i, q);
-                  copy.cell_rhs(i) -= scale * e[q] * w;
-                  if (with_matrix)
-                    for (unsigned int j = 0; j < component.size(); ++j)
-                      if (component[j] == component[i])
-                        copy.cell_matrix(i, j) +=
-                          scale * values.shape_value(j, q) * w;
-                }
+            for (const unsigned int i : dofs)
+              {
+                const double w = values.shape_value(i, q);
+                copy.cell_rhs(i) -= scale * e[q] * w;
+                if (with_matrix)
+                  for (const unsigned int j : dofs)
+                    copy.cell_matrix(i, j) +=
+                      scale * values.shape_value(j, q) * w;
+              }
           }
       }
   }
@@ -407,7 +423,11 @@ namespace viscoslide
     AssemblyScratch                             &scratch,
     AssemblyCopy                                &copy) const
   {
-    if (!cell->is_locally_owned())
+    // Only the rows of a locally owned cell; and beta is horizontal, so a
+    // horizontal face carries no flux (checked before the costly reinit).
+    const Tensor<1, dim> along =
+      cell->face(face_no)->vertex(1) - cell->face(face_no)->vertex(0);
+    if (!cell->is_locally_owned() || std::abs(along[0]) > std::abs(along[1]))
       return;
     FEInterfaceValues<dim> &fe_iv = scratch.interface_values;
     fe_iv.reinit(cell,
@@ -416,43 +436,40 @@ namespace viscoslide
                  neighbor,
                  neighbor_face_no,
                  neighbor_subface_no);
-    const unsigned int n_joint = fe_iv.n_current_interface_dofs();
-    const auto        &joint   = fe_iv.get_interface_dof_indices();
+    // The faces are straight: beta . n has one sign on a face.
+    const bool  upwind_is_mine = fe_iv.normal(0)[0] < 0; // beta . n > 0
+    const auto &mine           = fe_iv.get_fe_face_values(0);
+    const auto &upwind = fe_iv.get_fe_face_values(upwind_is_mine ? 0 : 1);
 
+    // Rows: the strain dofs of `cell`; columns: those of the upwind cell.
+    const auto                          &strain_dofs = coefficients.strain_dofs;
+    const unsigned int                   m           = strain_dofs[0].size();
+    std::vector<types::global_dof_index> mine_dofs(fe.n_dofs_per_cell()),
+      upwind_dofs(fe.n_dofs_per_cell());
+    cell->get_dof_indices(mine_dofs);
+    (upwind_is_mine ? cell : neighbor)->get_dof_indices(upwind_dofs);
     AssemblyCopy::Face face;
-    face.columns = joint;
-    face.matrix.reinit(fe.n_dofs_per_cell(), n_joint);
-    face.rows.resize(fe.n_dofs_per_cell());
-    cell->get_dof_indices(face.rows);
+    face.matrix.reinit(n_strain_components * m, n_strain_components * m);
+    for (unsigned int c = 0; c < n_strain_components; ++c)
+      for (const unsigned int i : strain_dofs[c])
+        {
+          face.rows.push_back(mine_dofs[i]);
+          face.columns.push_back(upwind_dofs[i]);
+        }
 
-    // The strain component of each joint dof (none: displacement).
-    std::vector<int> joint_component(n_joint, -1);
-    for (unsigned int j = 0; j < n_joint; ++j)
-      {
-        const auto local = fe_iv.interface_dof_to_dof_indices(j);
-        const auto side  = local[0] != numbers::invalid_unsigned_int ? 0 : 1;
-        const auto c     = coefficients.component[local[side]];
-        if (c >= first_component)
-          joint_component[j] = c - first_component;
-      }
-
-    const auto &mine = fe_iv.get_fe_face_values(0);
     for (unsigned int q = 0; q < fe_iv.n_quadrature_points; ++q)
       for (unsigned int c = 0; c < n_strain_components; ++c)
         {
           const double beta_n = -coefficients.ell[c] * fe_iv.normal(q)[0];
-          const bool   upwind_is_mine = beta_n > 0;
           const double scale =
             coefficients.row_scale[c] * beta_n * fe_iv.JxW(q);
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            if (coefficients.component[i] == first_component + c)
-              {
-                const double w = mine.shape_value(i, q);
-                for (unsigned int j = 0; j < n_joint; ++j)
-                  if (joint_component[j] == static_cast<int>(c))
-                    face.matrix(i, j) +=
-                      scale * fe_iv.shape_value(upwind_is_mine, j, q) * w;
-              }
+          for (unsigned int a = 0; a < m; ++a)
+            {
+              const double w = mine.shape_value(strain_dofs[c][a], q);
+              for (unsigned int b = 0; b < m; ++b)
+                face.matrix(c * m + a, c * m + b) +=
+                  scale * upwind.shape_value(strain_dofs[c][b], q) * w;
+            }
         }
     copy.faces.push_back(std::move(face));
   }

@@ -98,18 +98,6 @@ namespace viscoslide
   }
 
 
-  std::unique_ptr<TrilinosWrappers::SolverDirect>
-  factorize(const TrilinosWrappers::SparseMatrix &matrix)
-  {
-    static SolverControl control(1, 0);
-    auto solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-      control,
-      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
-    solver->initialize(matrix);
-    return solver;
-  }
-
-
   int
   relax(const NewtonProblem &p,
         const double         c0,

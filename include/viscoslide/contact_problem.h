@@ -30,6 +30,7 @@
 
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
+#include <viscoslide/linear_solver.h>
 #include <viscoslide/material.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
@@ -135,13 +136,13 @@ namespace viscoslide
     // Residual -R(u) and, if asked, the consistent tangent dR/du.
     void
     assemble(bool with_matrix);
-    // Factorizes (direct) or preconditions (iterative) system_matrix once;
-    // solve() may then be called for several right-hand sides.
+    // MUMPS (linear_solver) or, beyond 'Direct solver limit', GMRES
+    // with AMG.
+    bool
+    use_direct_solver() const;
     void
-    prepare_linear_solver();
-    void
-    solve(const TrilinosWrappers::MPI::Vector &rhs,
-          TrilinosWrappers::MPI::Vector       &x);
+    solve_iteratively(const TrilinosWrappers::MPI::Vector &rhs,
+                      TrilinosWrappers::MPI::Vector       &x);
     void
     solve_newton_system();
     SurfaceCoupling::System
@@ -293,7 +294,7 @@ namespace viscoslide
     LoadState committed; // state of old_solution/history
     LoadState current;   // state `solution` is an equilibrium of
 
-    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct_solver;
+    ReusedFactorization                                linear_solver;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
     OutputWriter              writer;

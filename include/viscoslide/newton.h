@@ -71,10 +71,6 @@ namespace viscoslide
          bool                 line_search,
          bool                 verbose,
          ConditionalOStream  &out);
-  // MUMPS factorization of a Newton matrix, for solves with several
-  // right-hand sides.
-  std::unique_ptr<TrilinosWrappers::SolverDirect>
-  factorize(const TrilinosWrappers::SparseMatrix &matrix);
 
   // Pseudo-transient continuation (Kelley and Keyes 1998) for a state whose
   // equilibrium is not near, after a jump of the contact edge: each

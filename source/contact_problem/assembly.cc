@@ -46,7 +46,7 @@ namespace viscoslide
                                       mpi_communicator));
     sp.compress();
     // The solver objects refer to the old matrix: release them first.
-    direct_solver.reset();
+    linear_solver.clear();
     amg.reset();
     system_matrix.reinit(sp);
 
@@ -72,7 +72,10 @@ namespace viscoslide
   {
     TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
     if (with_matrix)
-      system_matrix = 0;
+      {
+        system_matrix = 0;
+        linear_solver.matrix_changed(current.dt);
+      }
     system_rhs = 0;
     coupling.start_assembly();
 
@@ -173,22 +176,24 @@ namespace viscoslide
   }
 
 
-  void
-  ContactProblem::prepare_linear_solver()
+  bool
+  ContactProblem::use_direct_solver() const
   {
-    TimerOutput::Scope t(timer, "linear solve");
     using Parameters::LinearSolver;
-    const bool direct =
-      prm.solver.linear_solver == LinearSolver::direct ||
-      (prm.solver.linear_solver == LinearSolver::automatic &&
-       dof_handler.n_dofs() <= prm.solver.direct_solver_limit);
-    direct_solver.reset();
-    amg.reset();
-    if (direct)
-      {
-        direct_solver = factorize(system_matrix);
-      }
-    else
+    return prm.solver.linear_solver == LinearSolver::direct ||
+           (prm.solver.linear_solver == LinearSolver::automatic &&
+            dof_handler.n_dofs() <= prm.solver.direct_solver_limit);
+  }
+
+
+  // AMG for meshes beyond the direct solver's limit: set up anew for each
+  // Newton matrix.
+  void
+  ContactProblem::solve_iteratively(const TrilinosWrappers::MPI::Vector &rhs,
+                                    TrilinosWrappers::MPI::Vector       &x)
+  {
+    TimerOutput::Scope t(timer, "linear: AMG-preconditioned GMRES");
+    if (!amg)
       {
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         std::vector<std::vector<bool>>                    modes;
@@ -203,35 +208,28 @@ namespace viscoslide
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
         amg->initialize(system_matrix, data);
       }
-  }
-
-
-  void
-  ContactProblem::solve(const TrilinosWrappers::MPI::Vector &rhs,
-                        TrilinosWrappers::MPI::Vector       &x)
-  {
-    TimerOutput::Scope t(timer, "linear solve");
-    if (direct_solver)
-      direct_solver->solve(x, rhs);
-    else
-      {
-        // The tangent is indefinite where p' < 0, so GMRES, not CG.
-        SolverControl control(2000, 1e-10 * rhs.l2_norm());
-        SolverGMRES<TrilinosWrappers::MPI::Vector> solver(
-          control,
-          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
-        solver.solve(system_matrix, x, rhs, *amg);
-      }
+    // The tangent is indefinite where p' < 0, so GMRES, not CG.
+    SolverControl control(2000, 1e-10 * rhs.l2_norm());
+    SolverGMRES<TrilinosWrappers::MPI::Vector> solver(
+      control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
+    solver.solve(system_matrix, x, rhs, *amg);
   }
 
 
   void
   ContactProblem::solve_newton_system()
   {
-    prepare_linear_solver();
-    coupling.solve_bordered([this](const auto &b, auto &x) { solve(b, x); },
-                            system_rhs,
-                            newton_update);
+    const bool direct = use_direct_solver();
+    amg.reset(); // made for the previous matrix
+    coupling.solve_bordered(
+      [this, direct](const auto &b, auto &x) {
+        if (direct)
+          linear_solver.solve(system_matrix, b, x);
+        else
+          solve_iteratively(b, x);
+      },
+      system_rhs,
+      newton_update);
     constraints.distribute(newton_update);
   }
 

@@ -120,8 +120,8 @@ namespace viscoslide
                                      : "steady: assemble residual");
     if (with_matrix)
       {
-        system_matrix         = 0;
-        factorization_current = false;
+        system_matrix = 0;
+        linear_solver.matrix_changed(V_hat);
       }
     system_rhs = 0;
     coupling.start_assembly();

@@ -59,6 +59,7 @@ namespace viscoslide
     , dof_handler(triangulation)
     , quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
     , flux_quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
+    , linear_solver(timer)
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == first_component)
@@ -114,7 +115,7 @@ namespace viscoslide
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
-    direct_solver.reset(); // it refers to the old matrix
+    linear_solver.clear(); // it refers to the old matrix
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,
@@ -211,68 +212,15 @@ namespace viscoslide
 
 
 
-  // At a given speed and mesh the bulk operator (elasticity, arm and
-  // advection of eps_v) is linear: between Newton iterations only the
-  // surface traction terms change, on the few hundred dofs near the
-  // contact. So the factorization of the first Jacobian at a speed
-  // preconditions GMRES for the later ones, which then needs a few
-  // iterations instead of a new factorization (about 2 s at 60 000
-  // unknowns). A new factorization is made when GMRES does not converge
-  // within 'max_reuse_iterations', and whenever speed or mesh change.
-  void
-  SteadyStateSolver::solve_linear(const TrilinosWrappers::MPI::Vector &b,
-                                  TrilinosWrappers::MPI::Vector       &x)
-  {
-    constexpr unsigned int max_reuse_iterations = 30;
-    if (direct_solver && factorized_speed == V_hat && !factorization_current)
-      {
-        struct Factorization
-        {
-          TrilinosWrappers::SolverDirect *solver;
-          void
-          vmult(TrilinosWrappers::MPI::Vector       &dst,
-                const TrilinosWrappers::MPI::Vector &src) const
-          {
-            solver->solve(dst, src);
-          }
-        } preconditioner{direct_solver.get()};
-        SolverControl control(max_reuse_iterations, 1e-10 * b.l2_norm());
-        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-          control,
-          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-            max_reuse_iterations + 2));
-        x = 0.;
-        try
-          {
-            gmres.solve(system_matrix, x, b, preconditioner);
-            krylov_iterations += control.last_step();
-            return;
-          }
-        catch (const SolverControl::NoConvergence &)
-          {
-          }
-      }
-    if (!factorization_current)
-      {
-        direct_solver         = factorize(system_matrix);
-        factorization_current = true;
-        factorized_speed      = V_hat;
-        ++factorizations;
-      }
-    direct_solver->solve(x, b);
-  }
-
-
-  // Under force control the bordered system of the transient solver
-
   void
   SteadyStateSolver::solve_newton_system()
   {
-    TimerOutput::Scope t(timer, "steady: linear solve");
-    coupling.solve_bordered([this](const auto &b,
-                                   auto       &x) { solve_linear(b, x); },
-                            system_rhs,
-                            newton_update);
+    coupling.solve_bordered(
+      [this](const auto &b, auto &x) {
+        linear_solver.solve(system_matrix, b, x);
+      },
+      system_rhs,
+      newton_update);
     constraints.distribute(newton_update);
   }
 
@@ -382,7 +330,8 @@ namespace viscoslide
           << "  L_hat " << std::setw(11)
           << last_quantities.contact_length / scales.R << "  Newton " << its
           << "  dofs " << dof_handler.n_dofs() << "  factorizations "
-          << factorizations << "  GMRES " << krylov_iterations << std::endl;
+          << linear_solver.factorizations << "  GMRES "
+          << linear_solver.krylov_iterations << std::endl;
     return its;
   }
 

@@ -36,6 +36,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <viscoslide/linear_solver.h>
 #include <viscoslide/material.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
@@ -184,9 +185,6 @@ namespace viscoslide
     // [solver.cc]
     void
     solve_newton_system();
-    void
-    solve_linear(const TrilinosWrappers::MPI::Vector &b,
-                 TrilinosWrappers::MPI::Vector       &x);
     SurfaceCoupling::System
     newton_system();
     // Newton's method, else pseudo-transient relaxation, at the present
@@ -224,13 +222,7 @@ namespace viscoslide
     TrilinosWrappers::SparseMatrix system_matrix;
     TrilinosWrappers::MPI::Vector  solution; // ghosted
     TrilinosWrappers::MPI::Vector  system_rhs, newton_update;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
-    // Whether direct_solver holds the factorization of system_matrix as
-    // assembled last, and at which speed it was made.
-    bool   factorization_current = false;
-    double factorized_speed      = -1.;
-    // Counters for the log and the benchmark.
-    unsigned int factorizations = 0, krylov_iterations = 0;
+    ReusedFactorization            linear_solver;
 
     double V_hat = 0.;
     double delta = 0.;

@@ -24,14 +24,17 @@ namespace viscoslide
   // the speed (steady state) or the time step (transient): between Newton
   // iterations only the surface terms of the Jacobian change, on the few
   // hundred dofs near the contact. So the factorization of one Jacobian
-  // preconditions GMRES for the later Jacobians of the same bulk operator,
-  // which then costs a few back-substitutions instead of a new
-  // factorization. A new one is made when the bulk changed, or when GMRES
-  // does not converge within max_reuse_iterations [linear_solver.cc].
+  // preconditions GMRES for the later Jacobians of the same bulk operator.
+  // Whether that is cheaper than a new factorization depends on the mesh
+  // and on how far the contact moved since, so the choice is steered by
+  // the measured costs: GMRES is tried while its expected cost (the
+  // iterations it needed last, at the measured cost of one) is below that
+  // of the last factorization, and is given up for a new factorization as
+  // soon as it has spent as much [linear_solver.cc].
   class ReusedFactorization
   {
   public:
-    explicit ReusedFactorization(TimerOutput &timer);
+    ReusedFactorization(TimerOutput &timer, MPI_Comm comm);
 
     // The matrix was assembled anew, for the bulk operator named by
     // `bulk` (the speed or the time step).
@@ -51,20 +54,30 @@ namespace viscoslide
     unsigned int factorizations = 0, krylov_iterations = 0;
 
   private:
-    static constexpr unsigned int max_reuse_iterations = 30;
-
+    bool
+    worth_reusing() const;
     bool
     solve_with_earlier(const TrilinosWrappers::SparseMatrix &matrix,
                        const TrilinosWrappers::MPI::Vector  &rhs,
                        TrilinosWrappers::MPI::Vector        &x);
+    // Wall time of f, the same on every process (their maximum), so that
+    // all of them take the same branch.
+    template <typename F>
+    double
+    timed(const F &f) const;
 
     TimerOutput                                    &timer;
+    MPI_Comm                                        comm;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
     // Whether `direct` is the factorization of the matrix as assembled
     // last, and the bulk operator it was made for.
     bool   current         = false;
     double factorized_bulk = 0.;
     double assembled_bulk  = 0.;
+    // Measured: the last factorization, one GMRES iteration (at first one
+    // back-substitution), and the iterations GMRES needed last.
+    double       factorization_cost = 0., iteration_cost = 0.;
+    unsigned int last_iterations = 0;
   };
 } // namespace viscoslide
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <viscoslide/linear_solver.h>
 
@@ -20,6 +21,80 @@ namespace viscoslide
     solver->initialize(matrix);
     return solver;
   }
+
+
+  namespace
+  {
+    using Vector      = TrilinosWrappers::MPI::Vector;
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+    // The bordered system's unknowns: x in block 0, the scalar t in block
+    // 1 (one entry, owned by the first process).
+    double
+    scalar(const BlockVector &v)
+    {
+      return v.block(1).mean_value();
+    }
+
+    BlockVector
+    bordered_vector(const Vector &x, const double t, const MPI_Comm comm)
+    {
+      IndexSet one(1);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        one.add_index(0);
+      BlockVector v(std::vector<IndexSet>{x.locally_owned_elements(), one},
+                    comm);
+      v.block(0) = x;
+      v.block(1) = t;
+      return v;
+    }
+
+    // [K b; b^T d]
+    struct BorderedMatrix
+    {
+      const TrilinosWrappers::SparseMatrix &K;
+      const Vector                         &b;
+      const double                          d;
+
+      void
+      vmult(BlockVector &y, const BlockVector &x) const
+      {
+        const double t = scalar(x);
+        K.vmult(y.block(0), x.block(0));
+        y.block(0).add(t, b);
+        y.block(1) = (b * x.block(0)) + d * t;
+      }
+    };
+
+    // The inverse of [K0 b0; b0^T d0] from the factorization of K0 and
+    // w0 = K0^-1 b0, by block elimination: one back-substitution.
+    struct BorderedFactorization
+    {
+      TrilinosWrappers::SolverDirect &K0;
+      const Vector                   &b0, &w0;
+      const double                    schur; // d0 - b0 . w0
+
+      void
+      vmult(BlockVector &y, const BlockVector &x) const
+      {
+        K0.solve(y.block(0), x.block(0));
+        const double t = (scalar(x) - b0 * y.block(0)) / schur;
+        y.block(0).add(-t, w0);
+        y.block(1) = t;
+      }
+    };
+
+    struct Factorization
+    {
+      TrilinosWrappers::SolverDirect &K0;
+
+      void
+      vmult(Vector &y, const Vector &x) const
+      {
+        K0.solve(y, x);
+      }
+    };
+  } // namespace
 
 
   ReusedFactorization::ReusedFactorization(TimerOutput &timer, MPI_Comm comm)
@@ -41,7 +116,8 @@ namespace viscoslide
   ReusedFactorization::clear()
   {
     direct.reset();
-    current = false;
+    current      = false;
+    border.valid = false;
   }
 
 
@@ -64,62 +140,102 @@ namespace viscoslide
 
 
   void
-  ReusedFactorization::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                             const TrilinosWrappers::MPI::Vector  &rhs,
-                             TrilinosWrappers::MPI::Vector        &x)
+  ReusedFactorization::factorize_if_needed(
+    const TrilinosWrappers::SparseMatrix &matrix)
   {
-    if (worth_reusing() && solve_with_earlier(matrix, rhs, x))
+    if (current)
       return;
-    const bool first_solve = !current;
-    if (!current)
-      {
-        TimerOutput::Scope t(timer, "linear: factorize");
-        factorization_cost = timed([&] { direct = factorize(matrix); });
-        current            = true;
-        factorized_bulk    = assembled_bulk;
-        last_iterations    = 0;
-        ++factorizations;
-      }
+    TimerOutput::Scope t(timer, "linear: factorize");
+    factorization_cost = timed([&] { direct = factorize(matrix); });
+    current            = true;
+    factorized_bulk    = assembled_bulk;
+    last_iterations    = 0;
+    border.valid       = false;
+    iteration_cost     = 0.;
+    ++factorizations;
+  }
+
+
+  void
+  ReusedFactorization::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                             const Vector                         &rhs,
+                             Vector                               &x)
+  {
+    if (worth_reusing() && gmres(matrix, Factorization{*direct}, rhs, x))
+      return;
+    factorize_if_needed(matrix);
     TimerOutput::Scope t(timer, "linear: back-substitution");
     const double       cost = timed([&] { direct->solve(x, rhs); });
-    if (first_solve)
+    if (iteration_cost == 0.)
       iteration_cost = cost;
   }
 
 
-  bool
-  ReusedFactorization::solve_with_earlier(
+  double
+  ReusedFactorization::solve_bordered(
     const TrilinosWrappers::SparseMatrix &matrix,
-    const TrilinosWrappers::MPI::Vector  &rhs,
-    TrilinosWrappers::MPI::Vector        &x)
+    const Vector                         &b,
+    const double                          d,
+    const Vector                         &r,
+    const double                          m,
+    Vector                               &x)
+  {
+    if (worth_reusing() && border.valid)
+      {
+        BlockVector       y   = bordered_vector(x, 0., comm);
+        const BlockVector rhs = bordered_vector(r, m, comm);
+        if (gmres(BorderedMatrix{matrix, b, d},
+                  BorderedFactorization{*direct,
+                                        border.b,
+                                        border.w,
+                                        border.d - border.b * border.w},
+                  rhs,
+                  y))
+          {
+            x = y.block(0);
+            return scalar(y);
+          }
+      }
+    // Exact: x = K^-1 r - t K^-1 b. K^-1 b and the border are kept for the
+    // preconditioner of the next matrices.
+    Vector w;
+    w.reinit(r);
+    solve(matrix, r, x);
+    solve(matrix, b, w);
+    const double t = (m - b * x) / (d - b * w);
+    x.add(-t, w);
+    border.b.reinit(b);
+    border.b     = b;
+    border.w     = w;
+    border.d     = d;
+    border.valid = true;
+    return t;
+  }
+
+
+  // GMRES to a relative 1e-4, enough for Newton's method, which judges the
+  // residual itself; given up once it has cost as much as a new
+  // factorization.
+  template <typename VectorType, typename Matrix, typename Preconditioner>
+  bool
+  ReusedFactorization::gmres(const Matrix         &matrix,
+                             const Preconditioner &preconditioner,
+                             const VectorType     &rhs,
+                             VectorType           &x)
   {
     TimerOutput::Scope t(timer, "linear: GMRES on an earlier factorization");
-    struct Preconditioner
-    {
-      TrilinosWrappers::SolverDirect &factorization;
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        factorization.solve(dst, src);
-      }
-    } preconditioner{*direct};
-    // Give up once GMRES has cost as much as a new factorization. A
-    // relative 1e-4 is enough for Newton's method, which judges the
-    // residual itself.
     const unsigned int max_iterations = static_cast<unsigned int>(
       std::clamp(factorization_cost / iteration_cost, 2., 50.));
-    SolverControl control(max_iterations, 1e-4 * rhs.l2_norm());
-    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+    SolverControl           control(max_iterations, 1e-4 * rhs.l2_norm());
+    SolverGMRES<VectorType> solver(
       control,
-      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-        max_iterations + 2));
+      typename SolverGMRES<VectorType>::AdditionalData(max_iterations + 2));
     x                      = 0.;
     bool         converged = true;
     const double spent     = timed([&] {
       try
         {
-          gmres.solve(matrix, x, rhs, preconditioner);
+          solver.solve(matrix, x, rhs, preconditioner);
         }
       catch (const SolverControl::NoConvergence &)
         {

@@ -188,6 +188,21 @@ namespace viscoslide
   }
 
 
+  void
+  SurfaceCoupling::solve_bordered(ReusedFactorization                  &solver,
+                                  const TrilinosWrappers::SparseMatrix &matrix,
+                                  const VectorType                     &rhs,
+                                  VectorType                           &update)
+  {
+    delta_update = 0.;
+    if (force_controlled)
+      delta_update = solver.solve_bordered(
+        matrix, delta_coupling, delta_stiffness, rhs, -force_mismatch, update);
+    else
+      solver.solve(matrix, rhs, update);
+  }
+
+
   NewtonProblem
   SurfaceCoupling::newton_problem(const System &system)
   {

@@ -50,16 +50,44 @@ namespace viscoslide
           const TrilinosWrappers::MPI::Vector  &rhs,
           TrilinosWrappers::MPI::Vector        &x);
 
+    // The bordered system of force control,
+    //   [K   b] [x]   [r]
+    //   [b^T d] [t] = [m],
+    // for K = matrix; returns t. With a reusable factorization, one GMRES
+    // on the whole system, preconditioned by the bordered system of the
+    // factorized matrix; else two back-substitutions of a factorization
+    // of K.
+    double
+    solve_bordered(const TrilinosWrappers::SparseMatrix &matrix,
+                   const TrilinosWrappers::MPI::Vector  &b,
+                   double                                d,
+                   const TrilinosWrappers::MPI::Vector  &r,
+                   double                                m,
+                   TrilinosWrappers::MPI::Vector        &x);
+
     // Counters for the log and the benchmarks.
     unsigned int factorizations = 0, krylov_iterations = 0;
 
   private:
+    // The border of the factorized matrix and K0^-1 b0, for the
+    // preconditioner of the bordered system.
+    struct Border
+    {
+      TrilinosWrappers::MPI::Vector b, w;
+      double                        d     = 0.;
+      bool                          valid = false;
+    };
+
     bool
     worth_reusing() const;
+    void
+    factorize_if_needed(const TrilinosWrappers::SparseMatrix &matrix);
+    template <typename VectorType, typename Matrix, typename Preconditioner>
     bool
-    solve_with_earlier(const TrilinosWrappers::SparseMatrix &matrix,
-                       const TrilinosWrappers::MPI::Vector  &rhs,
-                       TrilinosWrappers::MPI::Vector        &x);
+    gmres(const Matrix         &matrix,
+          const Preconditioner &preconditioner,
+          const VectorType     &rhs,
+          VectorType           &x);
     // Wall time of f, the same on every process (their maximum), so that
     // all of them take the same branch.
     template <typename F>
@@ -78,6 +106,7 @@ namespace viscoslide
     // back-substitution), and the iterations GMRES needed last.
     double       factorization_cost = 0., iteration_cost = 0.;
     unsigned int last_iterations = 0;
+    Border       border;
   };
 } // namespace viscoslide
 

@@ -7,8 +7,7 @@
 //  * The control of the indenter. Displacement: delta is given. Force: delta
 //    is an unknown and F_n(u, delta) = F0 the extra equation. Spring: force
 //    control with F0 + k (delta0 - delta) as the target. Force control
-//    borders the Newton system, which solve_bordered() solves with two
-//    solves of the solver's own Jacobian.
+//    borders the Newton system, which solve_bordered() solves.
 //  * The surface dashpot of the pseudo-transient relaxation (relax()), by
 //    which a solver lands on a new branch after a contact edge jumped.
 //  * The contact edges that the adaptive mesh follows.
@@ -36,6 +35,7 @@
 
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
+#include <viscoslide/linear_solver.h>
 #include <viscoslide/newton.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
@@ -174,6 +174,13 @@ namespace viscoslide
     solve_bordered(const LinearSolve &solve,
                    const VectorType  &rhs,
                    VectorType        &update);
+    // The same with the direct solver, which takes the border into its
+    // own solve (ReusedFactorization::solve_bordered).
+    void
+    solve_bordered(ReusedFactorization                  &solver,
+                   const TrilinosWrappers::SparseMatrix &matrix,
+                   const VectorType                     &rhs,
+                   VectorType                           &update);
 
     // A solver's system as Newton's method sees it.
     struct System

@@ -219,17 +219,17 @@ namespace viscoslide
   void
   ContactProblem::solve_newton_system()
   {
-    const bool direct = use_direct_solver();
     amg.reset(); // made for the previous matrix
-    coupling.solve_bordered(
-      [this, direct](const auto &b, auto &x) {
-        if (direct)
-          linear_solver.solve(system_matrix, b, x);
-        else
-          solve_iteratively(b, x);
-      },
-      system_rhs,
-      newton_update);
+    if (use_direct_solver())
+      coupling.solve_bordered(linear_solver,
+                              system_matrix,
+                              system_rhs,
+                              newton_update);
+    else
+      coupling.solve_bordered([this](const auto &b,
+                                     auto &x) { solve_iteratively(b, x); },
+                              system_rhs,
+                              newton_update);
     constraints.distribute(newton_update);
   }
 

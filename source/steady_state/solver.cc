@@ -215,12 +215,10 @@ namespace viscoslide
   void
   SteadyStateSolver::solve_newton_system()
   {
-    coupling.solve_bordered(
-      [this](const auto &b, auto &x) {
-        linear_solver.solve(system_matrix, b, x);
-      },
-      system_rhs,
-      newton_update);
+    coupling.solve_bordered(linear_solver,
+                            system_matrix,
+                            system_rhs,
+                            newton_update);
     constraints.distribute(newton_update);
   }
 

@@ -97,9 +97,12 @@ namespace viscoslide
   } // namespace
 
 
-  ReusedFactorization::ReusedFactorization(TimerOutput &timer, MPI_Comm comm)
+  ReusedFactorization::ReusedFactorization(TimerOutput &timer,
+                                           MPI_Comm     comm,
+                                           const bool   reuse)
     : timer(timer)
     , comm(comm)
+    , reuse(reuse)
   {
   }
 
@@ -134,7 +137,7 @@ namespace viscoslide
   bool
   ReusedFactorization::worth_reusing() const
   {
-    return direct && !current && factorized_bulk == assembled_bulk &&
+    return reuse && direct && !current && factorized_bulk == assembled_bulk &&
            last_iterations * iteration_cost < factorization_cost;
   }
 

@@ -34,7 +34,12 @@ namespace viscoslide
   class ReusedFactorization
   {
   public:
-    ReusedFactorization(TimerOutput &timer, MPI_Comm comm);
+    // With reuse = false every new matrix is factorized: the transient
+    // solver's states are path-dependent (a contact edge that jumps from
+    // node to node can land on either of two neighbouring equilibria), and
+    // there the exact solves keep its results independent of the costs
+    // measured on a given machine.
+    ReusedFactorization(TimerOutput &timer, MPI_Comm comm, bool reuse = true);
 
     // The matrix was assembled anew, for the bulk operator named by
     // `bulk` (the speed or the time step).
@@ -96,6 +101,7 @@ namespace viscoslide
 
     TimerOutput                                    &timer;
     MPI_Comm                                        comm;
+    const bool                                      reuse;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
     // Whether `direct` is the factorization of the matrix as assembled
     // last, and the bulk operator it was made for.

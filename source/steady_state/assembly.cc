@@ -36,49 +36,38 @@ namespace viscoslide
   {
     AssemblyScratch(const FiniteElement<2> &fe,
                     const Quadrature<2>    &quadrature,
-                    const Quadrature<1>    &top_quadrature,
                     const Quadrature<1>    &flux_quadrature)
       : fe_values(fe,
                   quadrature,
                   update_values | update_gradients | update_JxW_values)
-      , top_values(fe, top_quadrature, SurfaceCoupling::face_update_flags())
       , interface_values(fe,
                          flux_quadrature,
                          update_values | update_normal_vectors |
                            update_JxW_values)
-      , strain(quadrature.size())
-      , projected_strain(quadrature.size())
       , grad_phi_q(quadrature.size())
       , projected_grad_q(quadrature.size())
       , grad_phi(quadrature.size(), fe.n_dofs_per_cell())
       , projected_grad(quadrature.size(), fe.n_dofs_per_cell())
-      , e(fe.n_components() - first_component,
-          std::vector<double>(quadrature.size()))
-      , eps_v(e.size() / components_per_arm)
-      , C_arm_i(e.size() / components_per_arm)
+      , C_arm_i((fe.n_components() - first_component) / components_per_arm)
     {
     }
 
     AssemblyScratch(const AssemblyScratch &other)
       : AssemblyScratch(other.fe_values.get_fe(),
                         other.fe_values.get_quadrature(),
-                        other.top_values.get_quadrature(),
                         other.interface_values.get_quadrature())
     {
     }
 
     FEValues<2>                        fe_values;
-    FEFaceValues<2>                    top_values;
     FEInterfaceValues<2>               interface_values;
-    std::vector<SymmetricTensor<2, 2>> strain, projected_strain, grad_phi_q,
-      projected_grad_q;
+    std::vector<SymmetricTensor<2, 2>> grad_phi_q, projected_grad_q;
     Table<2, SymmetricTensor<2, 2>>    grad_phi, projected_grad;
-    std::vector<std::vector<double>>   e; // eps_v of each component
-    std::vector<SymmetricTensor<2, 2>> eps_v, C_arm_i; // of each arm
+    std::vector<SymmetricTensor<2, 2>> C_arm_i; // of each arm
   };
 
 
-  // A cell's rows, and the rows of the faces assembled with it.
+  // A cell's matrix, and the blocks of the faces assembled with it.
   struct SteadyStateSolver::AssemblyCopy
   {
     struct Face
@@ -89,16 +78,12 @@ namespace viscoslide
 
     explicit AssemblyCopy(const unsigned int n)
       : cell_matrix(n, n)
-      , cell_rhs(n)
       , dofs(n)
     {
-      surface.reinit(n);
     }
 
     FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dofs;
-    SurfaceCoupling::LocalTerms          surface;
     std::vector<Face>                    faces;
   };
 
@@ -112,19 +97,80 @@ namespace viscoslide
   // beta . grad eps_v,k + eps_v,k = eps(u), beta = (-V tau_k, 0), as in
   // step-12. eps_v^upwind is the value on the side that beta leaves
   // (beta . n > 0); where material enters the block (x = +W/2) it is 0.
+  // All but the surface terms are linear in the unknowns: their matrix A is
+  // assembled once per speed and mesh (assemble_bulk), their residual is
+  // -A x, and each Newton iteration assembles the surface alone.
   void
   SteadyStateSolver::assemble(const bool with_matrix)
   {
+    if (bulk_speed != V_hat)
+      assemble_bulk();
     TimerOutput::Scope t(timer,
                          with_matrix ? "steady: assemble"
                                      : "steady: assemble residual");
     if (with_matrix)
       {
-        system_matrix = 0;
+        system_matrix.copy_from(bulk_matrix);
         linear_solver.matrix_changed(V_hat);
       }
-    system_rhs = 0;
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    x = solution;
+    bulk_matrix.vmult(system_rhs, x);
+    system_rhs *= -1.;
+    constraints.set_zero(system_rhs);
+
     coupling.start_assembly();
+    FEFaceValues<dim>                    top_values(fe,
+                                 coupling.face_quadrature(),
+                                 SurfaceCoupling::face_update_flags());
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
+    SurfaceCoupling::LocalTerms          surface;
+    std::vector<types::global_dof_index> dofs(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == top_boundary)
+            {
+              cell_matrix = 0;
+              cell_rhs    = 0;
+              surface.reinit(n);
+              top_values.reinit(cell, f);
+              coupling.add_face_terms(top_values,
+                                      solution,
+                                      delta,
+                                      s,
+                                      with_matrix,
+                                      cell_matrix,
+                                      cell_rhs,
+                                      surface);
+              cell->get_dof_indices(dofs);
+              coupling.copy_local_to_global(surface, dofs, constraints);
+              if (with_matrix)
+                constraints.distribute_local_to_global(
+                  cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
+              else
+                constraints.distribute_local_to_global(cell_rhs,
+                                                       dofs,
+                                                       system_rhs);
+            }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    coupling.finish_assembly(delta);
+  }
+
+
+  // The matrix of the linear terms at the present speed, on MeshWorker's
+  // mesh_loop: cells, the upwind fluxes of the interior faces, the outflow
+  // boundary.
+  void
+  SteadyStateSolver::assemble_bulk()
+  {
+    TimerOutput::Scope t(timer, "steady: assemble bulk");
+    bulk_matrix = 0;
 
     AssemblyCoefficients coefficients;
     coefficients.ell.resize(n_strain_components);
@@ -152,13 +198,13 @@ namespace viscoslide
     using Iterator = DoFHandler<dim>::active_cell_iterator;
     const auto cell_worker =
       [&](const Iterator &cell, AssemblyScratch &scratch, AssemblyCopy &copy) {
-        assemble_cell(cell, coefficients, with_matrix, scratch, copy);
+        assemble_cell(cell, coefficients, scratch, copy);
       };
     const auto boundary_worker = [&](const Iterator  &cell,
                                      const unsigned   f,
                                      AssemblyScratch &scratch,
                                      AssemblyCopy    &copy) {
-      assemble_boundary(cell, f, coefficients, with_matrix, scratch, copy);
+      assemble_boundary(cell, f, coefficients, scratch, copy);
     };
     const auto face_worker = [&](const Iterator  &cell,
                                  const unsigned   f,
@@ -171,35 +217,14 @@ namespace viscoslide
       assemble_interface(
         cell, f, sf, neighbor, nf, nsf, coefficients, scratch, copy);
     };
+    // The viscous strain is discontinuous and free of constraints, so the
+    // flux blocks go to the matrix directly.
     const auto copier = [&](const AssemblyCopy &copy) {
-      coupling.copy_local_to_global(copy.surface, copy.dofs, constraints);
-      if (with_matrix)
-        constraints.distribute_local_to_global(copy.cell_matrix,
-                                               copy.cell_rhs,
-                                               copy.dofs,
-                                               system_matrix,
-                                               system_rhs);
-      else
-        constraints.distribute_local_to_global(copy.cell_rhs,
-                                               copy.dofs,
-                                               system_rhs);
-      // The viscous strain is discontinuous and free of constraints, so
-      // the flux blocks go to the system directly. The flux is linear in
-      // eps_v: its residual is the block times the upwind values.
-      Vector<double> upwind_values, rhs;
+      constraints.distribute_local_to_global(copy.cell_matrix,
+                                             copy.dofs,
+                                             bulk_matrix);
       for (const auto &face : copy.faces)
-        {
-          upwind_values.reinit(face.columns.size());
-          rhs.reinit(face.rows.size());
-          solution.extract_subvector_to(face.columns.begin(),
-                                        face.columns.end(),
-                                        upwind_values.begin());
-          face.matrix.vmult(rhs, upwind_values);
-          rhs *= -1.;
-          system_rhs.add(face.rows, rhs);
-          if (with_matrix)
-            system_matrix.add(face.rows, face.columns, face.matrix);
-        }
+        bulk_matrix.add(face.rows, face.columns, face.matrix);
     };
 
     // Each locally owned cell assembles its own rows only, also on faces
@@ -214,19 +239,13 @@ namespace viscoslide
                           dof_handler.end(),
                           cell_worker,
                           copier,
-                          AssemblyScratch(fe,
-                                          quadrature,
-                                          coupling.face_quadrature(),
-                                          flux_quadrature),
+                          AssemblyScratch(fe, quadrature, flux_quadrature),
                           AssemblyCopy(fe.n_dofs_per_cell()),
                           flags,
                           boundary_worker,
                           face_worker);
-
-    if (with_matrix)
-      system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-    coupling.finish_assembly(delta);
+    bulk_matrix.compress(VectorOperation::add);
+    bulk_speed = V_hat;
   }
 
 
@@ -236,7 +255,6 @@ namespace viscoslide
   SteadyStateSolver::assemble_cell(
     const DoFHandler<dim>::active_cell_iterator &cell,
     const AssemblyCoefficients                  &coefficients,
-    const bool                                   with_matrix,
     AssemblyScratch                             &scratch,
     AssemblyCopy                                &copy) const
   {
@@ -247,26 +265,17 @@ namespace viscoslide
     const FEValuesExtractors::Vector displacement(0);
     const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
     const unsigned int n_arms           = material.n_arms();
-    auto              &strain           = scratch.strain;
-    auto              &projected_strain = scratch.projected_strain;
     auto              &grad_phi_q       = scratch.grad_phi_q;
     auto              &projected_grad_q = scratch.projected_grad_q;
 
     copy.cell_matrix = 0;
-    copy.cell_rhs    = 0;
-    copy.surface.reinit(n);
     copy.faces.clear();
     cell->get_dof_indices(copy.dofs);
     scratch.fe_values.reinit(cell);
-    fe_values[displacement].get_function_symmetric_gradients(solution, strain);
-    for (unsigned int c = 0; c < n_strain_components; ++c)
-      fe_values[FEValuesExtractors::Scalar(first_component + c)]
-        .get_function_values(solution, scratch.e[c]);
 
     // The arm sees the projection Pi eps(u) (viscous_strain.h).
     const FullMatrix<double> P =
       ViscousStrain::projection(fe_values, strain_basis);
-    ViscousStrain::project(P, strain, projected_strain);
     for (unsigned int i = 0; i < n; ++i)
       if (component[i] < first_component)
         {
@@ -280,28 +289,16 @@ namespace viscoslide
             }
         }
 
-    auto &eps_v = scratch.eps_v, &C_arm_i = scratch.C_arm_i;
+    auto &C_arm_i = scratch.C_arm_i;
     for (unsigned int q = 0; q < n_q; ++q)
       {
-        SymmetricTensor<2, dim> sigma = C0 * strain[q];
-        for (unsigned int a = 0; a < n_arms; ++a)
-          {
-            const auto &e = scratch.e;
-            const auto  c = components_per_arm * a;
-            eps_v[a] = ViscousStrain::tensor(e[c][q], e[c + 1][q], e[c + 2][q]);
-            sigma +=
-              material.arm_stiffness(a) * (projected_strain[q] - eps_v[a]);
-          }
         const double JxW = fe_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           if (component[i] < first_component)
             {
               const auto &grad_phi_i = scratch.grad_phi(q, i);
-              copy.cell_rhs(i) -= sigma * grad_phi_i * JxW;
-              if (!with_matrix)
-                continue;
-              const auto C0_i    = C0 * grad_phi_i;
-              const auto C_sum_i = C_sum * grad_phi_i;
+              const auto  C0_i       = C0 * grad_phi_i;
+              const auto  C_sum_i    = C_sum * grad_phi_i;
               for (unsigned int a = 0; a < n_arms; ++a)
                 C_arm_i[a] = material.arm_stiffness(a) * grad_phi_i;
               for (unsigned int j = 0; j < n; ++j)
@@ -321,70 +318,43 @@ namespace viscoslide
             }
           else
             {
-              const unsigned int c  = component[i] - first_component;
-              const unsigned int cc = c % components_per_arm;
-              const double       ec =
-                ViscousStrain::component(eps_v[c / components_per_arm], cc);
-              const double phi_i   = fe_values.shape_value(i, q);
-              const double phi_x_i = fe_values.shape_grad(i, q)[0];
-              copy.cell_rhs(i) -=
-                row_scale[c] *
-                (ell[c] * ec * phi_x_i +
-                 (ec - ViscousStrain::component(strain[q], cc)) * phi_i) *
-                JxW;
-              if (with_matrix)
-                for (unsigned int j = 0; j < n; ++j)
-                  {
-                    if (component[j] < first_component)
-                      copy.cell_matrix(i, j) -=
-                        row_scale[c] *
-                        ViscousStrain::component(scratch.grad_phi(q, j), cc) *
-                        phi_i * JxW;
-                    else if (component[j] == component[i])
-                      copy.cell_matrix(i, j) +=
-                        row_scale[c] * (ell[c] * phi_x_i + phi_i) *
-                        fe_values.shape_value(j, q) * JxW;
-                  }
+              const unsigned int c       = component[i] - first_component;
+              const unsigned int cc      = c % components_per_arm;
+              const double       phi_i   = fe_values.shape_value(i, q);
+              const double       phi_x_i = fe_values.shape_grad(i, q)[0];
+              for (unsigned int j = 0; j < n; ++j)
+                if (component[j] < first_component)
+                  copy.cell_matrix(i, j) -=
+                    row_scale[c] *
+                    ViscousStrain::component(scratch.grad_phi(q, j), cc) *
+                    phi_i * JxW;
+                else if (component[j] == component[i])
+                  copy.cell_matrix(i, j) += row_scale[c] *
+                                            (ell[c] * phi_x_i + phi_i) *
+                                            fe_values.shape_value(j, q) * JxW;
             }
       }
   }
 
 
-  // The top surface's traction terms, and on the outflow boundary
-  // (beta . n > 0, x = -W/2) the outflow flux with the cell's own value.
-  // Inflow (x = +W/2) brings eps_v = 0: no term.
+  // On the outflow boundary (beta . n > 0, x = -W/2) the outflow flux with
+  // the cell's own value. Inflow (x = +W/2) brings eps_v = 0: no term. The
+  // top surface is SurfaceCoupling's (assemble()).
   void
   SteadyStateSolver::assemble_boundary(
     const DoFHandler<dim>::active_cell_iterator &cell,
     const unsigned int                           face_no,
     const AssemblyCoefficients                  &coefficients,
-    const bool                                   with_matrix,
     AssemblyScratch                             &scratch,
     AssemblyCopy                                &copy) const
   {
-    if (cell->face(face_no)->boundary_id() == top_boundary)
-      {
-        scratch.top_values.reinit(cell, face_no);
-        coupling.add_face_terms(scratch.top_values,
-                                solution,
-                                delta,
-                                s,
-                                with_matrix,
-                                copy.cell_matrix,
-                                copy.cell_rhs,
-                                copy.surface);
-        return;
-      }
-    if (V_hat == 0.)
+    if (V_hat == 0. || cell->face(face_no)->boundary_id() == top_boundary)
       return;
     scratch.interface_values.reinit(cell, face_no);
-    const auto         &values = scratch.interface_values.get_fe_face_values(0);
-    std::vector<double> e(values.n_quadrature_points);
+    const auto &values = scratch.interface_values.get_fe_face_values(0);
     for (unsigned int c = 0; c < n_strain_components; ++c)
       {
         const auto &dofs = coefficients.strain_dofs[c];
-        values[FEValuesExtractors::Scalar(first_component + c)]
-          .get_function_values(solution, e);
         for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
           {
             const double beta_n =
@@ -394,14 +364,9 @@ namespace viscoslide
             const double scale =
               coefficients.row_scale[c] * beta_n * values.JxW(q);
             for (const unsigned int i : dofs)
-              {
-                const double w = values.shape_value(i, q);
-                copy.cell_rhs(i) -= scale * e[q] * w;
-                if (with_matrix)
-                  for (const unsigned int j : dofs)
-                    copy.cell_matrix(i, j) +=
-                      scale * values.shape_value(j, q) * w;
-              }
+              for (const unsigned int j : dofs)
+                copy.cell_matrix(i, j) +=
+                  scale * values.shape_value(j, q) * values.shape_value(i, q);
           }
       }
   }

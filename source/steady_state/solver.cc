@@ -120,6 +120,8 @@ namespace viscoslide
                          locally_owned_dofs,
                          dsp,
                          mpi_communicator);
+    bulk_matrix.reinit(system_matrix);
+    bulk_speed = -1.;
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);

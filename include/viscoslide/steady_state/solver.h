@@ -151,25 +151,27 @@ namespace viscoslide
     // [solver.cc]
     void
     setup_system();
-    // [assembly.cc]: the residual and Jacobian, on MeshWorker::mesh_loop
-    // as in step-12: cells, the upwind fluxes of the interior faces, and
-    // the boundary faces (outflow and the SurfaceCoupling's top surface).
+    // [assembly.cc]: the residual and Jacobian: the surface terms of
+    // SurfaceCoupling on the matrix of the linear terms, which
+    // assemble_bulk() makes once per speed and mesh on MeshWorker::mesh_loop
+    // as in step-12: cells, the upwind fluxes of the interior faces, the
+    // outflow boundary.
     void
     assemble(bool with_matrix);
+    void
+    assemble_bulk();
     struct AssemblyCoefficients;
     struct AssemblyScratch;
     struct AssemblyCopy;
     void
     assemble_cell(const DoFHandler<dim>::active_cell_iterator &cell,
                   const AssemblyCoefficients                  &coefficients,
-                  bool                                         with_matrix,
                   AssemblyScratch                             &scratch,
                   AssemblyCopy                                &copy) const;
     void
     assemble_boundary(const DoFHandler<dim>::active_cell_iterator &cell,
                       unsigned int                                 face_no,
                       const AssemblyCoefficients                  &coefficients,
-                      bool                                         with_matrix,
                       AssemblyScratch                             &scratch,
                       AssemblyCopy                                &copy) const;
     void
@@ -220,6 +222,10 @@ namespace viscoslide
     IndexSet                       locally_owned_dofs, locally_relevant_dofs;
     AffineConstraints<double>      constraints;
     TrilinosWrappers::SparseMatrix system_matrix;
+    // The matrix of the linear terms, and the speed it was made for (-1:
+    // none on this mesh).
+    TrilinosWrappers::SparseMatrix bulk_matrix;
+    double                         bulk_speed = -1.;
     TrilinosWrappers::MPI::Vector  solution; // ghosted
     TrilinosWrappers::MPI::Vector  system_rhs, newton_update;
     ReusedFactorization            linear_solver;

@@ -11,20 +11,21 @@
 
 namespace viscoslide
 {
-  std::unique_ptr<TrilinosWrappers::SolverDirect>
-  factorize(const TrilinosWrappers::SparseMatrix &matrix)
-  {
-    static SolverControl control(1, 0);
-    auto solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-      control,
-      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
-    solver->initialize(matrix);
-    return solver;
-  }
-
-
   namespace
   {
+    // MUMPS factorization of a Newton matrix, for solves with several
+    // right-hand sides.
+    std::unique_ptr<TrilinosWrappers::SolverDirect>
+    factorize(const TrilinosWrappers::SparseMatrix &matrix)
+    {
+      static SolverControl control(1, 0);
+      auto solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+        control,
+        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+      solver->initialize(matrix);
+      return solver;
+    }
+
     using Vector      = TrilinosWrappers::MPI::Vector;
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
@@ -207,11 +208,14 @@ namespace viscoslide
     solve(matrix, b, w);
     const double t = (m - b * x) / (d - b * w);
     x.add(-t, w);
-    border.b.reinit(b);
-    border.b     = b;
-    border.w     = w;
-    border.d     = d;
-    border.valid = true;
+    if (reuse)
+      {
+        border.b.reinit(b);
+        border.b     = b;
+        border.w     = w;
+        border.d     = d;
+        border.valid = true;
+      }
     return t;
   }
 

@@ -130,9 +130,19 @@ namespace viscoslide
   void
   SurfaceCoupling::copy_local_to_global(
     const LocalTerms                           &local,
+    const FullMatrix<double>                   &cell_matrix,
+    const Vector<double>                       &cell_rhs,
     const std::vector<types::global_dof_index> &dofs,
-    const AffineConstraints<double>            &constraints)
+    const AffineConstraints<double>            &constraints,
+    const bool                                  with_matrix,
+    TrilinosWrappers::SparseMatrix             &matrix,
+    VectorType                                 &rhs)
   {
+    if (with_matrix)
+      constraints.distribute_local_to_global(
+        cell_matrix, cell_rhs, dofs, matrix, rhs);
+    else
+      constraints.distribute_local_to_global(cell_rhs, dofs, rhs);
     force += local.force;
     delta_stiffness += local.stiffness;
     abs_force += local.abs_force;
@@ -144,8 +154,14 @@ namespace viscoslide
 
 
   void
-  SurfaceCoupling::finish_assembly(const double delta)
+  SurfaceCoupling::finish_assembly(const double                    delta,
+                                   const bool                      with_matrix,
+                                   TrilinosWrappers::SparseMatrix &matrix,
+                                   VectorType                     &rhs)
   {
+    if (with_matrix)
+      matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
     traction_scale = Utilities::MPI::sum(abs_force, comm);
     if (!force_controlled)
       return;

@@ -15,11 +15,6 @@ namespace viscoslide
 {
   using namespace dealii;
 
-  // MUMPS factorization of a Newton matrix, for solves with several
-  // right-hand sides [linear_solver.cc].
-  std::unique_ptr<TrilinosWrappers::SolverDirect>
-  factorize(const TrilinosWrappers::SparseMatrix &matrix);
-
   // At a given mesh the bulk operator is linear and fixed by one number,
   // the speed (steady state) or the time step (transient): between Newton
   // iterations only the surface terms of the Jacobian change, on the few

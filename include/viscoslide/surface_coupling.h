@@ -148,14 +148,25 @@ namespace viscoslide
                    FullMatrix<double>        &cell_matrix,
                    Vector<double>            &cell_rhs,
                    LocalTerms                &local) const;
+    // Adds a cell's local system (its matrix only if with_matrix) to the
+    // solver's system, and its border terms to the coupling's.
     void
-    copy_local_to_global(const LocalTerms                           &local,
+    copy_local_to_global(const LocalTerms         &local,
+                         const FullMatrix<double> &cell_matrix,
+                         const Vector<double>     &cell_rhs,
                          const std::vector<types::global_dof_index> &dofs,
-                         const AffineConstraints<double> &constraints);
-    // Sums over the processes; under force control the mismatch
+                         const AffineConstraints<double> &constraints,
+                         bool                             with_matrix,
+                         TrilinosWrappers::SparseMatrix  &matrix,
+                         VectorType                      &rhs);
+    // Compresses the solver's system after the copies; sums the coupling's
+    // terms over the processes; under force control the mismatch
     // F_n - target and its derivative by delta.
     void
-    finish_assembly(double delta);
+    finish_assembly(double                          delta,
+                    bool                            with_matrix,
+                    TrilinosWrappers::SparseMatrix &matrix,
+                    VectorType                     &rhs);
 
     // --- Newton's method
 

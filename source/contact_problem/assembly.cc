@@ -160,19 +160,19 @@ namespace viscoslide
               }
 
           cell->get_dof_indices(local_dofs);
-          coupling.copy_local_to_global(surface_terms, local_dofs, constraints);
-          if (with_matrix)
-            constraints.distribute_local_to_global(
-              cell_matrix, cell_rhs, local_dofs, system_matrix, system_rhs);
-          else
-            constraints.distribute_local_to_global(cell_rhs,
-                                                   local_dofs,
-                                                   system_rhs);
+          coupling.copy_local_to_global(surface_terms,
+                                        cell_matrix,
+                                        cell_rhs,
+                                        local_dofs,
+                                        constraints,
+                                        with_matrix,
+                                        system_matrix,
+                                        system_rhs);
         }
-    if (with_matrix)
-      system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-    coupling.finish_assembly(current.delta);
+    coupling.finish_assembly(current.delta,
+                             with_matrix,
+                             system_matrix,
+                             system_rhs);
   }
 
 

@@ -147,19 +147,16 @@ namespace viscoslide
                                       cell_rhs,
                                       surface);
               cell->get_dof_indices(dofs);
-              coupling.copy_local_to_global(surface, dofs, constraints);
-              if (with_matrix)
-                constraints.distribute_local_to_global(
-                  cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
-              else
-                constraints.distribute_local_to_global(cell_rhs,
-                                                       dofs,
-                                                       system_rhs);
+              coupling.copy_local_to_global(surface,
+                                            cell_matrix,
+                                            cell_rhs,
+                                            dofs,
+                                            constraints,
+                                            with_matrix,
+                                            system_matrix,
+                                            system_rhs);
             }
-    if (with_matrix)
-      system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-    coupling.finish_assembly(delta);
+    coupling.finish_assembly(delta, with_matrix, system_matrix, system_rhs);
   }
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <viscoslide/boundary_element/solver.h>
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/driver.h>
 #include <viscoslide/output.h>
@@ -336,8 +337,11 @@ namespace viscoslide
     {
       try
         {
-          ContactProblem problem(c.parameters, comm, &progress);
-          problem.run(resume);
+          if (c.parameters.sliding.solver ==
+              Parameters::SlidingSolver::boundary_element)
+            BoundaryElementSolver(c.parameters, comm, &progress).run();
+          else
+            ContactProblem(c.parameters, comm, &progress).run(resume);
           return "";
         }
       catch (std::exception &e)

@@ -120,7 +120,10 @@ namespace viscoslide
     VISCOSLIDE_CHOICE_NAMES(TimeConstant, "relaxation", "retardation")
     VISCOSLIDE_CHOICE_NAMES(Substrate, "half-plane", "layer")
     VISCOSLIDE_CHOICE_NAMES(Control, "displacement", "force", "spring")
-    VISCOSLIDE_CHOICE_NAMES(SlidingSolver, "transient", "steady-state")
+    VISCOSLIDE_CHOICE_NAMES(SlidingSolver,
+                            "transient",
+                            "steady-state",
+                            "boundary-element")
     VISCOSLIDE_CHOICE_NAMES(LinearSolver, "automatic", "direct", "iterative")
 #undef VISCOSLIDE_CHOICE_NAMES
 
@@ -846,7 +849,11 @@ namespace viscoslide
         "steady state. 'steady-state': the steady sliding state solved "
         "directly in the frame of the indenter (doc/steady_state.md), with "
         "continuation in V_hat from the relaxed state of the approach; "
-        "no history.csv, no retraction afterwards.");
+        "no history.csv, no retraction afterwards. 'boundary-element': the "
+        "same steady states of a periodic half-plane or bonded layer from "
+        "the surface compliance alone, applied by FFT on a uniform grid "
+        "(doc/boundary_element.md, section Boundary element): no mesh, "
+        "no fields, an independent check of the finite elements.");
       prm.declare_entry("Continuation factor",
                         "4",
                         Patterns::Double(),
@@ -946,6 +953,53 @@ namespace viscoslide
       require(steady_window >= 0,
               entry("Sliding", "Steady-state window", steady_window) +
                 " must not be negative");
+    }
+
+
+    void
+    BoundaryElement::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary element");
+      prm.declare_entry("Grid spacing",
+                        "0",
+                        Patterns::Double(),
+                        "Spacing (in eps) of the uniform surface grid of "
+                        "Sliding/Solver = boundary-element. 0: half the "
+                        "Mesh/Finest surface cell, the node spacing of the "
+                        "finite elements' quadratic surface cells there.");
+      prm.declare_entry(
+        "Period",
+        "0",
+        Patterns::Double(),
+        "Length (in eps) of the periodic cell of the boundary-element "
+        "solver: one indenter per period. 0: automatic, the larger of "
+        "Geometry/Domain width and Wake periods x V tau_c at each speed "
+        "(tau_c the longest retardation time), so that the wake has "
+        "relaxed before it reaches the next indenter.");
+      prm.declare_entry("Wake periods",
+                        "20",
+                        Patterns::Double(),
+                        "See Period.");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryElement::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary element");
+      grid_spacing = prm.get_double("Grid spacing");
+      period       = prm.get_double("Period");
+      wake_periods = prm.get_double("Wake periods");
+      prm.leave_subsection();
+      require(grid_spacing >= 0 && std::isfinite(grid_spacing),
+              entry("Boundary element", "Grid spacing", grid_spacing) +
+                " must not be negative");
+      require(period >= 0 && std::isfinite(period),
+              entry("Boundary element", "Period", period) +
+                " must not be negative");
+      require(wake_periods > 0 && std::isfinite(wake_periods),
+              entry("Boundary element", "Wake periods", wake_periods) +
+                " must be positive");
     }
 
 
@@ -1112,6 +1166,7 @@ namespace viscoslide
       Mesh::declare(prm);
       Sliding::declare(prm);
       Solver::declare(prm);
+      BoundaryElement::declare(prm);
       Sweep::declare(prm);
     }
 
@@ -1127,6 +1182,7 @@ namespace viscoslide
       mesh.parse(prm);
       sliding.parse(prm);
       solver.parse(prm);
+      boundary_element.parse(prm);
       sweep.parse(prm);
       solver.verbose = output.verbosity == Verbosity::verbose;
       check_consistency();
@@ -1154,6 +1210,32 @@ namespace viscoslide
                 sliding.speed == 0,
               "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "
               "the steady-state solver has no time to retract in");
+      if (sliding.solver == SlidingSolver::boundary_element)
+        {
+          require(sliding.control != Control::spring,
+                  "'Sliding/Control' = spring is not available with "
+                  "'Sliding/Solver' = boundary-element: use force or "
+                  "displacement");
+          require(sliding.control == Control::force ||
+                    geometry.substrate == Substrate::layer ||
+                    sliding.speed == 0,
+                  "'Sliding/Solver' = boundary-element on a half-plane "
+                  "needs 'Sliding/Control' = force: the periodic "
+                  "half-plane has no depth to measure delta from");
+          require(loading.approach_speed == 0,
+                  "'Sliding/Solver' = boundary-element approaches "
+                  "quasi-statically: set 'Loading/Approach speed' = 0");
+          const double h = boundary_element.grid_spacing > 0
+                             ? boundary_element.grid_spacing
+                             : mesh.finest_cell / 2;
+          const double L = boundary_element.period > 0 ? boundary_element.period
+                                                       : geometry.domain_width;
+          require(L / h >= 64 && L / h <= 1e8,
+                  entry("Boundary element", "Grid spacing", h) +
+                    " and the period " + std::to_string(L) + " eps give " +
+                    std::to_string(L / h) +
+                    " grid points; between 64 and 1e8 are allowed");
+        }
     }
   } // namespace Parameters
 

@@ -55,7 +55,8 @@ namespace viscoslide
     enum class SlidingSolver
     {
       transient,
-      steady_state
+      steady_state,
+      boundary_element
     };
     enum class LinearSolver
     {
@@ -236,6 +237,17 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
 
+    // The grid of the boundary-element solver (boundary_element/solver.h).
+    struct BoundaryElement
+    {
+      double grid_spacing; // eps; 0: half the Finest surface cell
+      double period;       // eps; 0: automatic
+      double wake_periods; // the automatic period, in V tau_c
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
     struct Solver
     {
       LinearSolver linear_solver;
@@ -284,6 +296,7 @@ namespace viscoslide
       Mesh            mesh;
       Sliding         sliding;
       Solver          solver;
+      BoundaryElement boundary_element;
       Sweep           sweep;
 
       static void

@@ -216,6 +216,14 @@ namespace viscoslide
     pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
           << Parameters::to_string(prm.sliding.control)
           << " control, by continuation from the relaxed state" << std::endl;
-    steady.run_stations(writer, steady_state_table, progress);
+    run_stations(steady,
+                 Parameters::SlidingSolver::steady_state,
+                 prm,
+                 scales,
+                 writer,
+                 steady_state_table,
+                 progress,
+                 pcout,
+                 mpi_communicator);
   }
 } // namespace viscoslide

@@ -41,6 +41,7 @@
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
+#include <viscoslide/steady_sliding.h>
 #include <viscoslide/steady_state_table.h>
 #include <viscoslide/surface_coupling.h>
 
@@ -51,7 +52,7 @@ namespace viscoslide
 {
   using namespace dealii;
 
-  class SteadyStateSolver
+  class SteadyStateSolver : public SteadySliding
   {
   public:
     static constexpr unsigned int dim = 2;
@@ -77,75 +78,66 @@ namespace viscoslide
                double                               delta,
                double                               s);
 
-    // The stations of Sliding/Sliding speed and Sliding/Load path, one
-    // after the other by continuation: a row of `table` and a profile for
-    // each, fields if asked, and continuation.csv with every converged
-    // step. A station that cannot be reached gets its row with steady = 0
-    // (values of the last converged state, whose V_hat, delta and F_n it
-    // shows), the continuation goes on to the next one, and at the end
-    // std::runtime_error names the stations missed. [output.cc]
-    void
-    run_stations(OutputWriter     &writer,
-                 SteadyStateTable &table,
-                 Progress         *progress);
-
     // Continues the steady state from its present speed to V_hat in steps
     // no larger than the Continuation factor (shorter where Newton fails),
     // adapting the mesh to the contact edges at each speed. Returns false
     // if a step could not be solved; the state is then the last converged
     // one, at speed(). [solver.cc]
     bool
-    continue_to(
-      double                       V_hat,
-      const std::function<void()> &on_converged = [] {});
+    continue_to(double                       V_hat,
+                const std::function<void()> &on_converged) override;
 
     // Follows the steady state at the current speed to a new load: F_n
     // under force control, delta under displacement control (SI units),
     // by continuation in steps; false if a step cannot be solved.
     // [solver.cc]
     bool
-    continue_to_load(
-      double                       target,
-      const std::function<void()> &on_converged = [] {});
+    continue_to_load(double                       target,
+                     const std::function<void()> &on_converged) override;
 
     double
-    speed() const
+    speed() const override
     {
       return V_hat;
     }
     double
-    approach() const
+    approach() const override
     {
       return delta;
     }
     const SurfaceQuantities &
-    quantities() const
+    quantities() const override
     {
       return last_quantities;
     }
     // integral of D over the block [output.cc]
     double
-    dissipation_rate() const;
+    dissipation_rate() const override;
     // Newton iterations of the last converged speed (re-solves after mesh
     // adaptation included).
     unsigned int
-    newton_iterations() const
+    newton_iterations() const override
     {
       return last_newton_iterations;
     }
-    types::global_dof_index
-    n_dofs() const
+    unsigned long
+    n_unknowns() const override
     {
       return dof_handler.n_dofs();
+    }
+    bool
+    force_control() const override
+    {
+      return coupling.force_control();
     }
 
     // [output.cc]
     void
-    write_profile(const std::string &path) const;
+    write_profile(const std::string &path) const override;
     // Displacement, viscous strain, stress and D over the block, and the
     // surface pressure and gap, as VTU/PVTU through the writer. [output.cc]
     void
-    write_fields(OutputWriter &writer, unsigned int counter) const;
+    write_fields(OutputWriter &writer, unsigned int counter) const override;
 
   private:
     // [solver.cc]

@@ -1,0 +1,195 @@
+// The boundary-element solver of the steady sliding state
+// (Sliding/Solver = boundary-element; doc/boundary_element.md).
+//
+// Only the top surface is discretised: the vertical displacement u_j at
+// the points x_j of a uniform periodic grid centred on the indenter's
+// apex. In the indenter's frame the steady state solves
+//     u = C q(g),   g_j = eps + h(x_j) - delta - u_j,
+// with C the viscoelastic surface compliance at the sliding speed
+// (compliance.h) and q the traction law, plus, under force control, the
+// load equation integral of -q = F_n with delta unknown. Newton's method
+// (newton.h) solves it, its linear systems by GMRES with the dense
+// Jacobian of the points near the contact as preconditioner; the approach
+// is a sequence of relaxed (V = 0) states, the speeds and loads follow by
+// continuation, as in the finite-element steady-state solver.
+//
+// The implementation: solver.cc (grid, Newton, continuation, the run),
+// output.cc (surface quantities and profiles).
+#ifndef viscoslide_boundary_element_solver_h
+#define viscoslide_boundary_element_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/indenter.h>
+#include <viscoslide/interaction_law.h>
+#include <viscoslide/material.h>
+#include <viscoslide/newton.h>
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/steady_sliding.h>
+#include <viscoslide/steady_state_table.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  class BoundaryElementSolver : public SteadySliding
+  {
+  public:
+    BoundaryElementSolver(const Parameters::AllParameters &prm,
+                          MPI_Comm                         comm,
+                          Progress                        *progress);
+    ~BoundaryElementSolver();
+
+    // The approach to Loading/Target load (or to the Final approach), then
+    // the stations; writes steady_state.csv, continuation.csv and the
+    // profiles. Throws std::runtime_error if a station was missed.
+    // [solver.cc]
+    void
+    run();
+
+    // SteadySliding [solver.cc]
+    bool
+    continue_to(double                       V_hat,
+                const std::function<void()> &on_converged) override;
+    bool
+    continue_to_load(double                       target,
+                     const std::function<void()> &on_converged) override;
+    double
+    speed() const override
+    {
+      return V_hat;
+    }
+    double
+    approach() const override
+    {
+      return delta;
+    }
+    const SurfaceQuantities &
+    quantities() const override
+    {
+      return last_quantities;
+    }
+    double
+    dissipation_rate() const override;
+    unsigned int
+    newton_iterations() const override
+    {
+      return last_newton_iterations;
+    }
+    unsigned long
+    n_unknowns() const override
+    {
+      return u.size() + (hold_force ? 1 : 0);
+    }
+    bool
+    force_control() const override
+    {
+      return hold_force;
+    }
+    // [output.cc]
+    void
+    write_profile(const std::string &path) const override;
+    void
+    write_fields(OutputWriter &, unsigned int) const override
+    {
+    }
+
+  private:
+    // The grid for the period this speed needs (Boundary element/Period):
+    // rebuilt when it must grow or can shrink four-fold, the state carried
+    // over at equal x. [solver.cc]
+    void
+    fit_period(double V_hat);
+    void
+    make_grid(unsigned int n_points);
+
+    // Newton's method, then pseudo-transient relaxation, at the present
+    // speed, control and delta or load; on failure the state is restored.
+    // Returns the iterations or -1. [solver.cc]
+    int
+    solve();
+    NewtonProblem
+    newton_problem();
+    void
+    assemble(bool with_matrix);
+    double
+    residual_norm() const;
+    void
+    compute_update();
+    // Steps the control parameter from its present value to `to` through
+    // set(value), in steps no larger than `step` (halved where Newton
+    // fails, down to `min_step`), calling on_converged after each and
+    // stopping early once done() holds.
+    bool
+    follow(
+      double                             from,
+      double                             to,
+      double                             step,
+      double                             min_step,
+      const std::function<void(double)> &set,
+      const std::function<void()>       &on_converged,
+      const std::function<bool()>       &done = [] { return false; });
+    void
+    approach_phase();
+
+    // The traction q_j, its tangent dq/dg and the gaps. [output.cc]
+    void
+    update_quantities();
+
+    const Parameters::AllParameters &prm;
+    MPI_Comm                         comm;
+    ConditionalOStream               pcout;
+    TimerOutput                      timer;
+    const Scales                     scales;
+    const ViscoelasticSolid          material;
+    std::unique_ptr<InteractionLaw>  law;
+    std::unique_ptr<Indenter>        indenter;
+    OutputWriter                     writer;
+    SteadyStateTable                 steady_state_table;
+    Progress                        *progress;
+
+    // The grid: n points x_j = (j - n/2) dx, and the solid its compliance
+    // describes: during the approach of a half-plane the block of Domain
+    // height on a rigid base, as in the finite elements (doc/
+    // boundary_element.md, Approach).
+    const double                       dx;
+    Parameters::Substrate              substrate;
+    double                             thickness;
+    std::unique_ptr<SurfaceCompliance> compliance;
+    std::vector<double>                x, h;
+
+    // The state.
+    Vector<double> u;
+    double         delta        = 0;
+    double         V_hat        = 0;
+    bool           hold_force   = false;
+    double         target_force = 0;
+
+    // Newton's work: gaps, tractions (q, attraction > 0), their tangent,
+    // the residual u - C q with the load equation last, the update, the
+    // iterate a line search starts from, the surface dashpot of relax().
+    Vector<double> gaps, traction, tangent, residual, update, u0;
+    double         delta0 = 0, dashpot = 0;
+    Vector<double> anchor;
+
+    // The preconditioner: the Jacobian of the window [first, first + m) of
+    // points near the contact, factorized, with the load equation bordered.
+    class WindowPreconditioner;
+    std::unique_ptr<WindowPreconditioner> preconditioner;
+    unsigned int                          last_gmres_iterations = 0;
+
+    SurfaceQuantities last_quantities{};
+    unsigned int      last_newton_iterations = 0;
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,86 @@
+// What every solver of the steady sliding state offers (the finite-element
+// SteadyStateSolver and the BoundaryElementSolver), and the loop over the
+// stations of a run that both share: the listed speeds, then the loads of
+// Sliding/Load path, each with its row in steady_state.csv and its profile
+// (implemented in source/steady_sliding.cc).
+#ifndef viscoslide_steady_sliding_h
+#define viscoslide_steady_sliding_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/postprocessing.h>
+#include <viscoslide/steady_state_table.h>
+
+#include <functional>
+#include <string>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  class SteadySliding
+  {
+  public:
+    virtual ~SteadySliding() = default;
+
+    // Continues the steady state from its present speed to V_hat, calling
+    // on_converged after every converged continuation step. Returns false
+    // if a step could not be solved; the state is then the last converged
+    // one.
+    virtual bool
+    continue_to(double V_hat, const std::function<void()> &on_converged) = 0;
+
+    // Follows the steady state at the current speed to a new load: F_n
+    // under force control, delta under displacement control (internal
+    // units).
+    virtual bool
+    continue_to_load(double                       target,
+                     const std::function<void()> &on_converged) = 0;
+
+    virtual double
+    speed() const = 0;
+    virtual double
+    approach() const = 0;
+    virtual const SurfaceQuantities &
+    quantities() const = 0;
+    // The dissipation rate of the whole solid (internal units).
+    virtual double
+    dissipation_rate() const = 0;
+    // Newton iterations of the last converged step.
+    virtual unsigned int
+    newton_iterations() const = 0;
+    // Unknowns of the discretisation.
+    virtual unsigned long
+    n_unknowns() const = 0;
+    virtual bool
+    force_control() const = 0;
+
+    virtual void
+    write_profile(const std::string &path) const = 0;
+    // Fields over the solid, if the solver has them.
+    virtual void
+    write_fields(OutputWriter &writer, unsigned int counter) const = 0;
+  };
+
+  // The stations of Sliding/Sliding speed and Sliding/Load path, one after
+  // the other by continuation: a row of `table` and a profile for each,
+  // fields if asked, and continuation.csv with every converged step. A
+  // station that cannot be reached gets its row with steady = 0 (values of
+  // the last converged state, whose V_hat, delta and F_n it shows), the
+  // continuation goes on to the next one, and at the end std::runtime_error
+  // names the stations missed.
+  void
+  run_stations(SteadySliding                   &solver,
+               Parameters::SlidingSolver        kind,
+               const Parameters::AllParameters &prm,
+               const Scales                    &scales,
+               OutputWriter                    &writer,
+               SteadyStateTable                &table,
+               Progress                        *progress,
+               ConditionalOStream              &out,
+               MPI_Comm                         comm);
+} // namespace viscoslide
+
+#endif

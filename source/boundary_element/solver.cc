@@ -1,0 +1,652 @@
+// BoundaryElementSolver: the grid, Newton's method with its preconditioned
+// GMRES, the continuation in approach, speed and load, and the run.
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <viscoslide/boundary_element/solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace viscoslide
+{
+  namespace
+  {
+    // The smallest n >= m of the form 2^a 3^b 5^c 7^d, even, for which
+    // FFTW is fastest.
+    unsigned int
+    fft_size(const double m)
+    {
+      for (unsigned int n = std::max(2u, 2 * (unsigned int)(std::ceil(m / 2)));;
+           n += 2)
+        {
+          unsigned int r = n;
+          for (const unsigned int p : {2u, 3u, 5u, 7u})
+            while (r % p == 0)
+              r /= p;
+          if (r == 1)
+            return n;
+        }
+    }
+  } // namespace
+
+
+  // The Jacobian of Newton's system restricted to the points near the
+  // contact, where the traction law's tangent is large, factorized once
+  // and used for as long as GMRES converges quickly with it. Outside the
+  // window the tangent is nearly zero, so that the rest of the system is
+  // the identity plus the coupling through C, which one more application
+  // of C accounts for (block elimination).
+  class BoundaryElementSolver::WindowPreconditioner
+  {
+  public:
+    WindowPreconditioner(const SurfaceCompliance &compliance,
+                         const Vector<double>    &tangent,
+                         const double             dashpot,
+                         const unsigned int       first,
+                         const unsigned int       m,
+                         const bool               force,
+                         const double             force_scale)
+      : compliance(compliance)
+      , first(first)
+      , m(m)
+      , force(force)
+      , weight(m)
+      , load_weight(m)
+      , lu(m + 1, m + 1)
+    {
+      const Vector<double> column = compliance.impulse_response();
+      const unsigned int   n      = column.size();
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          weight[j]      = tangent[first + j] + dashpot;
+          load_weight[j] = tangent[first + j];
+        }
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          double border = 0;
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              const double c = column[(i + n - j) % n];
+              lu(i, j)       = (i == j ? 1. : 0.) + c * weight[j];
+              border += c * load_weight[j];
+            }
+          lu(i, m) = force ? border : 0.;
+          lu(m, i) = force ? load_weight[i] / force_scale : 0.;
+        }
+      lu(m, m) =
+        force ? std::accumulate(load_weight.begin(), load_weight.end(), 0.) /
+                  force_scale
+              : 1.;
+      lu.compute_lu_factorization();
+    }
+
+    void
+    vmult(Vector<double> &dst, const Vector<double> &src) const
+    {
+      const unsigned int n = src.size() - 1;
+      Vector<double>     window(m + 1);
+      for (unsigned int j = 0; j < m; ++j)
+        window[j] = src[first + j];
+      window[m] = src[n];
+      lu.solve(window);
+      Vector<double> w(n), Cw;
+      for (unsigned int j = 0; j < m; ++j)
+        w[first + j] = weight[j] * window[j] + load_weight[j] * window[m];
+      compliance.apply(w, Cw);
+      for (unsigned int j = 0; j < n; ++j)
+        dst[j] = src[j] - Cw[j];
+      for (unsigned int j = 0; j < m; ++j)
+        dst[first + j] = window[j];
+      dst[n] = window[m];
+    }
+
+    // Whether the window [begin, begin + size) lies within this one.
+    bool
+    covers(const unsigned int begin, const unsigned int size) const
+    {
+      return begin >= first && begin + size <= first + m;
+    }
+
+  private:
+    const SurfaceCompliance &compliance;
+    const unsigned int       first, m;
+    const bool               force;
+    Vector<double>           weight, load_weight;
+    LAPACKFullMatrix<double> lu;
+  };
+
+
+  BoundaryElementSolver::BoundaryElementSolver(
+    const Parameters::AllParameters &parameters,
+    MPI_Comm                         comm,
+    Progress                        *progress)
+    : prm(parameters)
+    , comm(comm)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(comm) == 0 &&
+              parameters.output.verbosity != Parameters::Verbosity::quiet)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , scales(parameters)
+    , material(1. - std::pow(parameters.material.poisson_ratio, 2),
+               (1. - std::pow(parameters.material.poisson_ratio, 2)) /
+                 parameters.material.E0_over_Einf,
+               parameters.material.poisson_ratio,
+               scales.tau_arm,
+               parameters.material.prony_series)
+    , law(create_interaction_law(parameters.adhesion.law,
+                                 scales.dgamma,
+                                 scales.eps))
+    , indenter(create_indenter(parameters.indenter,
+                               scales.R,
+                               parameters.geometry.domain_width))
+    , writer(parameters.output.directory, comm, parameters.output.field_format)
+    , steady_state_table(parameters,
+                         scales,
+                         writer.path("steady_state.csv"),
+                         comm)
+    , progress(progress)
+    , dx((parameters.boundary_element.grid_spacing > 0
+            ? parameters.boundary_element.grid_spacing
+            : parameters.mesh.finest_cell / 2) *
+         scales.eps)
+    , substrate(Parameters::Substrate::layer)
+    , thickness(parameters.geometry.height() * scales.eps)
+  {
+  }
+
+
+  BoundaryElementSolver::~BoundaryElementSolver() = default;
+
+
+  void
+  BoundaryElementSolver::make_grid(const unsigned int n)
+  {
+    const Vector<double> old_u = u;
+    const unsigned int   n_old = old_u.size();
+    compliance                 = std::make_unique<SurfaceCompliance>(
+      substrate, thickness, material, prm.material.poisson_ratio, n, dx);
+    compliance->set_speed(V_hat * scales.eps / scales.tau_ref);
+    x.resize(n);
+    h.resize(n);
+    u.reinit(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        x[j] = (double(j) - n / 2) * dx;
+        h[j] = indenter->profile(x[j]);
+        // The same x on the old grid; beyond it, its nearer end.
+        if (n_old > 0)
+          {
+            const long i =
+              std::clamp<long>(long(j) - n / 2 + n_old / 2, 0, long(n_old) - 1);
+            u[j] = old_u[i];
+          }
+      }
+    preconditioner.reset();
+    pcout << "Boundary-element grid: " << n << " points, spacing " << dx
+          << " eps, period " << n * dx << " eps" << std::endl;
+  }
+
+
+  void
+  BoundaryElementSolver::fit_period(const double V)
+  {
+    const double tau_c =
+      material.longest_relaxation_time() / prm.material.E0_over_Einf;
+    const double       period = prm.boundary_element.period > 0
+                                  ? prm.boundary_element.period * scales.eps
+                                  : std::max(prm.geometry.domain_width * scales.eps,
+                                       prm.boundary_element.wake_periods * V *
+                                         scales.eps / scales.tau_ref * tau_c);
+    const unsigned int n      = fft_size(period / dx);
+    if (n > u.size() || 4 * n < u.size())
+      make_grid(n);
+  }
+
+
+  void
+  BoundaryElementSolver::assemble(const bool with_matrix)
+  {
+    TimerOutput::Scope t(timer, "boundary element: residual");
+    const unsigned int n = u.size();
+    gaps.reinit(n);
+    traction.reinit(n);
+    tangent.reinit(n);
+    Vector<double> w(n), Cw;
+    double         Fn = 0;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        gaps[j]     = scales.eps + h[j] - delta - u[j];
+        traction[j] = law->traction(gaps[j]);
+        tangent[j]  = law->derivative(gaps[j]);
+        w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
+        Fn -= traction[j] * dx;
+      }
+    compliance->apply(w, Cw);
+    residual.reinit(n + 1);
+    for (unsigned int j = 0; j < n; ++j)
+      residual[j] = u[j] - Cw[j];
+    residual[n] = hold_force ? (Fn - target_force) / scales.sigma_max : 0.;
+    if (with_matrix)
+      {
+        // The window: the points where the traction law is stiff.
+        const double stiff = 1e-3 * tangent.linfty_norm();
+        long         first = -1, last = -1;
+        for (unsigned int j = 0; j < n; ++j)
+          if (std::abs(tangent[j]) > stiff)
+            {
+              if (first < 0)
+                first = j;
+              last = j;
+            }
+        unsigned int begin = 0, m = 0;
+        if (first >= 0)
+          {
+            const long margin = std::max(4l, (last - first) / 8);
+            begin             = std::max(0l, first - margin);
+            m                 = std::min<long>(last + margin + 1, n) - begin;
+          }
+        if (!preconditioner || last_gmres_iterations > 20 ||
+            !preconditioner->covers(begin, m))
+          {
+            TimerOutput::Scope t(timer, "boundary element: factorization");
+            preconditioner =
+              std::make_unique<WindowPreconditioner>(*compliance,
+                                                     tangent,
+                                                     dashpot,
+                                                     begin,
+                                                     m,
+                                                     hold_force,
+                                                     scales.sigma_max / dx);
+          }
+      }
+  }
+
+
+  double
+  BoundaryElementSolver::residual_norm() const
+  {
+    const unsigned int n        = u.size();
+    double             misfit   = 0;
+    double             absolute = 0;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        misfit = std::max(misfit, std::abs(residual[j]));
+        absolute += std::abs(traction[j]) * dx;
+      }
+    // The load equation relative to the total absolute traction, as the
+    // finite-element solvers measure their residual.
+    const double load = std::abs(residual[n]) * scales.sigma_max /
+                        (absolute + scales.sigma_max * dx);
+    return std::max(misfit / scales.eps, load);
+  }
+
+
+  void
+  BoundaryElementSolver::compute_update()
+  {
+    TimerOutput::Scope t(timer, "boundary element: GMRES");
+    const unsigned int n = u.size();
+    // The Jacobian: du + C[(q' + c) du + q' d delta], and the load row.
+    struct Jacobian
+    {
+      const BoundaryElementSolver &s;
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        const unsigned int n = s.u.size();
+        Vector<double>     w(n), Cw;
+        double             load = 0;
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const double du = src[j];
+            const double dd = s.hold_force ? src[n] : 0.;
+            w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
+            load += s.tangent[j] * (du + dd) * s.dx;
+          }
+        s.compliance->apply(w, Cw);
+        for (unsigned int j = 0; j < n; ++j)
+          dst[j] = src[j] + Cw[j];
+        dst[n] = s.hold_force ? load / s.scales.sigma_max : src[n];
+      }
+    } jacobian{*this};
+    Vector<double> rhs(residual);
+    rhs *= -1.;
+    update.reinit(n + 1);
+    SolverControl control(1000, 1e-8 * rhs.l2_norm(), false, false);
+    SolverGMRES<Vector<double>> gmres(
+      control, SolverGMRES<Vector<double>>::AdditionalData(100));
+    try
+      {
+        gmres.solve(jacobian, update, rhs, *preconditioner);
+      }
+    catch (SolverControl::NoConvergence &)
+      {
+        // Newton's method judges the update by the residual it gives.
+      }
+    last_gmres_iterations = control.last_step();
+  }
+
+
+  NewtonProblem
+  BoundaryElementSolver::newton_problem()
+  {
+    NewtonProblem p;
+    p.assemble      = [this](const bool with_matrix) { assemble(with_matrix); };
+    p.residual_norm = [this] { return residual_norm(); };
+    p.tolerance     = [this] { return 100. * prm.solver.newton_tolerance; };
+    p.compute_update   = [this] { compute_update(); };
+    p.update_norm      = [this] { return update.l2_norm(); };
+    p.update_max_norm  = [this] { return update.linfty_norm(); };
+    p.remember_iterate = [this] {
+      u0     = u;
+      delta0 = delta;
+    };
+    p.step = [this](const double alpha) {
+      const unsigned int n = u.size();
+      for (unsigned int j = 0; j < n; ++j)
+        u[j] = u0[j] + alpha * update[j];
+      delta = delta0 + (hold_force ? alpha * update[n] : 0.);
+    };
+    p.set_dashpot = [this](const double c) {
+      dashpot = c;
+      if (c > 0)
+        anchor = u;
+    };
+    return p;
+  }
+
+
+  int
+  BoundaryElementSolver::solve()
+  {
+    const Vector<double> u_start          = u;
+    const double         delta_start      = delta;
+    const NewtonProblem  problem          = newton_problem();
+    auto                 relax_from_start = [&] {
+      u     = u_start;
+      delta = delta_start;
+      preconditioner.reset();
+      const int steps = relax(problem,
+                              16. * scales.dgamma / (scales.eps * scales.eps),
+                              0.5 * scales.eps,
+                              prm.solver.max_relaxation_steps,
+                              prm.solver.verbose,
+                              pcout);
+      dashpot         = 0;
+      return steps;
+    };
+    // Without contact, the surface jumps in: Newton's method would land
+    // anywhere, also on the unloading (JKR) branch of a contact far wider
+    // than the one the surface first reaches; the pseudo-transient
+    // relaxation follows the jump as an overdamped motion would, like the
+    // finite-element approach.
+    assemble(false);
+    const bool in_contact = *std::min_element(gaps.begin(), gaps.end()) <
+                            prm.adhesion.contact_gap * scales.eps;
+    int its = in_contact ? newton(problem,
+                                  prm.solver.max_newton_iterations,
+                                  prm.solver.line_search,
+                                  prm.solver.verbose,
+                                  pcout)
+                         : relax_from_start();
+    // Past a jump of a contact edge the equilibrium is not near: relax
+    // towards it (newton.h).
+    if (its < 0 && in_contact)
+      its = relax_from_start();
+    if (its < 0)
+      {
+        u     = u_start;
+        delta = delta_start;
+        preconditioner.reset();
+        return -1;
+      }
+    last_newton_iterations = its;
+    update_quantities();
+    return its;
+  }
+
+
+  bool
+  BoundaryElementSolver::follow(const double                       from,
+                                const double                       to,
+                                const double                       step,
+                                const double                       min_step,
+                                const std::function<void(double)> &set,
+                                const std::function<void()>       &on_converged,
+                                const std::function<bool()>       &done)
+  {
+    double         at = from, size = step;
+    double         at_before = 0, delta_before = 0;
+    Vector<double> u_before;
+    while (at != to)
+      {
+        const bool           last = std::abs(to - at) <= size * (1 + 1e-9);
+        const double         next = last ? to : at + (to > at ? size : -size);
+        const Vector<double> u_at = u;
+        const double         delta_at = delta;
+        set(next);
+        // Secant predictor from the step before: without it a step of
+        // the approach starts with the contact inside the repulsive wall.
+        if (u_before.size() == u.size())
+          {
+            const double ratio = (next - at) / (at - at_before);
+            if (std::abs(ratio) <= 2)
+              {
+                for (unsigned int j = 0; j < u.size(); ++j)
+                  u[j] += ratio * (u_at[j] - u_before[j]);
+                if (hold_force)
+                  delta += ratio * (delta_at - delta_before);
+              }
+          }
+        if (solve() >= 0)
+          {
+            at_before    = at;
+            u_before     = u_at;
+            delta_before = delta_at;
+            at           = next;
+            on_converged();
+            if (done())
+              return true;
+            size = std::min(step, 2 * size);
+            continue;
+          }
+        u     = u_at;
+        delta = delta_at;
+        set(at);
+        size /= 2;
+        if (size < min_step)
+          return false;
+      }
+    return true;
+  }
+
+
+  bool
+  BoundaryElementSolver::continue_to(const double                 target,
+                                     const std::function<void()> &on_converged)
+  {
+    fit_period(std::max(V_hat, target));
+    auto set_speed = [this, target](const double log_V) {
+      V_hat =
+        std::abs(log_V - std::log(target)) < 1e-12 ? target : std::exp(log_V);
+      compliance->set_speed(V_hat * scales.eps / scales.tau_ref);
+      preconditioner.reset();
+    };
+    if (V_hat == 0)
+      {
+        // From the relaxed state: directly, or else from the speed whose
+        // relaxation length is a tenth of the grid spacing.
+        set_speed(std::log(target));
+        if (solve() >= 0)
+          {
+            on_converged();
+            return true;
+          }
+        const double start =
+          std::min(target,
+                   0.1 * dx / (scales.eps / scales.tau_ref * scales.tau_arm));
+        set_speed(std::log(start));
+        if (solve() < 0)
+          {
+            V_hat = 0;
+            compliance->set_speed(0);
+            return false;
+          }
+        on_converged();
+      }
+    return follow(std::log(V_hat),
+                  std::log(target),
+                  std::log(prm.sliding.continuation_factor),
+                  1e-3,
+                  set_speed,
+                  on_converged);
+  }
+
+
+  bool
+  BoundaryElementSolver::continue_to_load(
+    const double                 target,
+    const std::function<void()> &on_converged)
+  {
+    double      &parameter = hold_force ? target_force : delta;
+    const double distance  = std::abs(target - parameter);
+    return follow(
+      parameter,
+      target,
+      distance / 10,
+      distance * 1e-4,
+      [&parameter](const double v) { parameter = v; },
+      on_converged);
+  }
+
+
+  void
+  BoundaryElementSolver::approach_phase()
+  {
+    TimerOutput::Scope t(timer, "boundary element: approach");
+    substrate = Parameters::Substrate::layer;
+    thickness = prm.geometry.height() * scales.eps;
+    fit_period(0.);
+    hold_force     = false;
+    delta          = prm.loading.initial_approach * scales.eps;
+    const auto set = [this](const double d) { delta = d; };
+    if (solve() < 0)
+      throw std::runtime_error(
+        "the boundary-element solver found no equilibrium at the initial "
+        "approach delta_hat = " +
+        CsvTable::format(prm.loading.initial_approach));
+    const double F    = prm.loading.target_load * scales.force;
+    bool         done = false;
+    CsvTable     table(writer.path("approach.csv"),
+                   {"step",
+                        "phase",
+                        "delta_hat",
+                        "F_n_hat",
+                        "L_hat",
+                        "min_gap_over_eps",
+                        "newton_iterations",
+                        "n_dofs"},
+                   version_string() +
+                     "; forces per unit length in (pi dgamma^2 E0* R)^(1/3)",
+                   comm);
+    unsigned int step    = 0;
+    auto         add_row = [&](const std::string &phase) {
+      const auto &q = last_quantities;
+      table.add_row(
+        {{"step", std::to_string(step++)},
+         {"phase", phase},
+         {"delta_hat", CsvTable::format(delta / scales.eps)},
+         {"F_n_hat", CsvTable::format(q.normal_force / scales.force)},
+         {"L_hat", CsvTable::format(q.contact_length / scales.R)},
+         {"min_gap_over_eps", CsvTable::format(q.minimum_gap / scales.eps)},
+         {"newton_iterations", std::to_string(last_newton_iterations)},
+         {"n_dofs", std::to_string(n_unknowns())}});
+    };
+    add_row("start");
+    auto report = [&] {
+      add_row("approach");
+      pcout << "Approach delta_hat = " << delta / scales.eps
+            << ": F_n_hat = " << last_quantities.normal_force / scales.force
+            << ", L_hat = " << last_quantities.contact_length / scales.R << " ("
+            << last_newton_iterations << " Newton iterations)" << std::endl;
+      done =
+        prm.loading.has_target_load() &&
+        last_quantities.minimum_gap < prm.adhesion.contact_gap * scales.eps &&
+        last_quantities.normal_force >= F;
+    };
+    if (!follow(delta,
+                prm.loading.final_approach * scales.eps,
+                prm.loading.increment * scales.eps,
+                prm.loading.minimum_increment * scales.eps,
+                set,
+                report,
+                [&done] { return done; }))
+      throw std::runtime_error(
+        "the boundary-element solver failed in the approach at "
+        "delta_hat = " +
+        CsvTable::format(delta / scales.eps) +
+        " (Newton's method and the relaxation did not converge with "
+        "the Minimum approach increment)");
+    if (!prm.loading.has_target_load())
+      return;
+    if (!done)
+      throw Parameters::ExcInvalidInput(
+        "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
+        " was not reached by 'Loading/Final approach' = " +
+        CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
+        CsvTable::format(last_quantities.normal_force / scales.force) +
+        "); raise the Final approach");
+    hold_force   = true;
+    target_force = F;
+    preconditioner.reset();
+    if (solve() < 0)
+      throw std::runtime_error("the boundary-element solver could not hold "
+                               "the Target load after the approach");
+    add_row("load");
+    pcout << "Load F_hat = " << prm.loading.target_load
+          << " reached at delta_hat = " << delta / scales.eps << std::endl;
+  }
+
+
+  void
+  BoundaryElementSolver::run()
+  {
+    approach_phase();
+    hold_force = prm.sliding.control == Parameters::Control::force;
+    if (hold_force)
+      target_force = last_quantities.normal_force;
+    if (prm.geometry.substrate == Parameters::Substrate::half_plane)
+      {
+        // From the block of the approach to the half-plane, at the load
+        // of the approach.
+        substrate = Parameters::Substrate::half_plane;
+        make_grid(u.size());
+        if (solve() < 0)
+          throw std::runtime_error(
+            "the boundary-element solver could not carry the state of the "
+            "approach over to the half-plane");
+      }
+    preconditioner.reset();
+    if (prm.sliding.speed > 0)
+      {
+        pcout << "Steady sliding under "
+              << Parameters::to_string(prm.sliding.control)
+              << " control, boundary elements on " << u.size() << " points"
+              << std::endl;
+        run_stations(*this,
+                     Parameters::SlidingSolver::boundary_element,
+                     prm,
+                     scales,
+                     writer,
+                     steady_state_table,
+                     progress,
+                     pcout,
+                     comm);
+      }
+    else
+      write_profile(writer.path("surface_profile_final.csv"));
+    timer.print_wall_time_statistics(comm);
+  }
+} // namespace viscoslide

@@ -1,0 +1,108 @@
+#include <viscoslide/steady_sliding.h>
+
+#include <cstdio>
+
+namespace viscoslide
+{
+  void
+  run_stations(SteadySliding                   &solver,
+               const Parameters::SlidingSolver  kind,
+               const Parameters::AllParameters &prm,
+               const Scales                    &scales,
+               OutputWriter                    &writer,
+               SteadyStateTable                &steady_state_table,
+               Progress                        *progress,
+               ConditionalOStream              &out,
+               MPI_Comm                         comm)
+  {
+    CsvTable table(writer.path("continuation.csv"),
+                   {"V_hat",
+                    "delta_hat",
+                    "F_n_hat",
+                    "F_t_hat",
+                    "mu",
+                    "mu_energy",
+                    "L_hat",
+                    "newton_iterations",
+                    "n_dofs"},
+                   version_string() + "; time unit: " +
+                     Parameters::to_string(prm.material.time_constant) +
+                     " time",
+                   comm);
+    // The last converged state, so that a failure reports it and not the
+    // unconverged one.
+    struct
+    {
+      double            V_hat = 0., delta = 0., rate = 0.;
+      SurfaceQuantities q{};
+    } last;
+    last.delta        = solver.approach();
+    last.q            = solver.quantities();
+    auto on_converged = [&] {
+      last            = {solver.speed(),
+                         solver.approach(),
+                         solver.dissipation_rate(),
+                         solver.quantities()};
+      const double V  = last.V_hat * scales.eps / scales.tau_ref;
+      const double Fn = last.q.normal_force;
+      using F         = CsvTable;
+      table.add_row(
+        {{"V_hat", F::format(last.V_hat)},
+         {"delta_hat", F::format(last.delta / scales.eps)},
+         {"F_n_hat", F::format(Fn / scales.force)},
+         {"F_t_hat", F::format(last.q.tangential_force / scales.force)},
+         {"mu", F::format(std::abs(last.q.tangential_force / Fn))},
+         {"mu_energy", F::format(std::abs(last.rate / V / Fn))},
+         {"L_hat", F::format(last.q.contact_length / scales.R)},
+         {"newton_iterations", std::to_string(solver.newton_iterations())},
+         {"n_dofs", std::to_string(solver.n_unknowns())}});
+    };
+
+    const auto       &speeds    = prm.sliding.speeds;
+    const auto       &loads     = prm.sliding.load_path;
+    const bool        force     = solver.force_control();
+    const double      unit      = force ? scales.force : scales.eps;
+    const auto        n_total   = speeds.size() + loads.size();
+    const std::string load_name = force ? "F_hat " : "delta_hat ";
+    std::string       failed;
+    for (unsigned int k = 0; k < n_total; ++k)
+      {
+        const bool   is_speed = k < speeds.size();
+        const double value    = is_speed ? speeds[k] : loads[k - speeds.size()];
+        const std::string what =
+          (is_speed ? std::string("V_hat ") : load_name) +
+          CsvTable::format(value);
+        const bool converged =
+          is_speed ? solver.continue_to(value, on_converged)
+                   : solver.continue_to_load(value * unit, on_converged);
+        steady_state_table.add_row(
+          last.V_hat, last.delta, last.q, last.rate, converged, 0., kind, out);
+        if (!converged)
+          {
+            failed += (failed.empty() ? "" : ", ") + what;
+            continue;
+          }
+        char suffix[16];
+        std::snprintf(suffix, sizeof(suffix), "_%02u", k);
+        // With a list, a profile per station; the last one also under the
+        // name the single-speed run uses.
+        if (n_total > 1)
+          solver.write_profile(writer.path("surface_profile_steady" +
+                                           std::string(suffix) + ".csv"));
+        if (k + 1 == n_total)
+          solver.write_profile(writer.path("surface_profile_steady.csv"));
+        if (prm.output.write_fields)
+          solver.write_fields(writer, k);
+        if (progress != nullptr)
+          out << "  " << (is_speed ? "V_hat " : load_name) << value << " ("
+              << k + 1 << "/" << n_total << ")  ["
+              << progress->report((k + 1.) / n_total) << "]" << std::endl;
+      }
+    if (!failed.empty())
+      throw std::runtime_error(
+        "The " + Parameters::to_string(kind) + " solver did not converge at " +
+        failed +
+        "; their rows in steady_state.csv hold the last converged state "
+        "with steady = 0");
+  }
+} // namespace viscoslide

@@ -108,6 +108,12 @@ namespace viscoslide
       add(words(sw.loads), "F", [](const std::string &v) {
         return std::vector<Setting>{{"Loading", "Target load", v}};
       });
+      std::vector<std::string> solvers;
+      for (const auto s : sw.solvers)
+        solvers.push_back(Parameters::to_string(s));
+      add(solvers, "", [](const std::string &v) {
+        return std::vector<Setting>{{"Sliding", "Solver", v}};
+      });
       std::vector<std::string> controls;
       for (const auto c : sw.controls)
         controls.push_back(Parameters::to_string(c));

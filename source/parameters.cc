@@ -1096,6 +1096,13 @@ namespace viscoslide
         Patterns::List(Patterns::Selection(choice_pattern<Control>()), 0),
         "Comma-separated 'displacement', 'force' and/or 'spring'; "
         "each replaces Sliding/Control.");
+      prm.declare_entry(
+        "Solvers",
+        "",
+        Patterns::List(Patterns::Selection(choice_pattern<SlidingSolver>()), 0),
+        "Comma-separated sliding solvers ('transient', 'steady-state', "
+        "'boundary-element'); each replaces Sliding/Solver, so that one "
+        "file compares the methods on the same cases.");
       prm.declare_entry("Spring stiffnesses",
                         "",
                         list,
@@ -1145,6 +1152,9 @@ namespace viscoslide
       controls.clear();
       for (const auto &w : Utilities::split_string_list(prm.get("Controls")))
         controls.push_back(parse_choice<Control>(w, "Sweep/Controls"));
+      solvers.clear();
+      for (const auto &w : Utilities::split_string_list(prm.get("Solvers")))
+        solvers.push_back(parse_choice<SlidingSolver>(w, "Sweep/Solvers"));
       spring_stiffnesses = numbers("Spring stiffnesses", true);
       shapes = Utilities::split_string_list(prm.get("Indenter shapes"));
       prm.leave_subsection();
@@ -1210,6 +1220,13 @@ namespace viscoslide
                 sliding.speed == 0,
               "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "
               "the steady-state solver has no time to retract in");
+      require(sliding.speeds.size() == 1 ||
+                std::find(sweep.solvers.begin(),
+                          sweep.solvers.end(),
+                          SlidingSolver::transient) == sweep.solvers.end(),
+              "'Sweep/Solvers' with 'transient' needs a single 'Sliding/"
+              "Sliding speed' (the transient solver runs each listed speed "
+              "as a case of its own; the steady solvers follow the list)");
       if (sliding.solver == SlidingSolver::boundary_element)
         {
           require(sliding.control != Control::spring,
@@ -1254,5 +1271,17 @@ namespace viscoslide
                 : p.material.E0_over_Einf)
     , tau_ref(1.)
   {
+  }
+
+
+  ViscoelasticSolid
+  make_solid(const Parameters::AllParameters &p, const Scales &scales)
+  {
+    const double one_minus_nu2 = 1. - std::pow(p.material.poisson_ratio, 2);
+    return ViscoelasticSolid(one_minus_nu2,
+                             one_minus_nu2 / p.material.E0_over_Einf,
+                             p.material.poisson_ratio,
+                             scales.tau_arm,
+                             p.material.prony_series);
   }
 } // namespace viscoslide

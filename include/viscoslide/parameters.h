@@ -268,13 +268,14 @@ namespace viscoslide
     // its own section alone; see doc/sweeps.md.
     struct Sweep
     {
-      std::vector<double>      tabor_parameters;
-      std::vector<std::string> thicknesses; // numbers or "half-plane"
-      std::vector<double>      approaches;
-      std::vector<double>      loads;
-      std::vector<Control>     controls;
-      std::vector<double>      spring_stiffnesses;
-      std::vector<std::string> shapes;
+      std::vector<double>        tabor_parameters;
+      std::vector<std::string>   thicknesses; // numbers or "half-plane"
+      std::vector<double>        approaches;
+      std::vector<double>        loads;
+      std::vector<Control>       controls;
+      std::vector<SlidingSolver> solvers;
+      std::vector<double>        spring_stiffnesses;
+      std::vector<std::string>   shapes;
 
       static void
       declare(ParameterHandler &prm);
@@ -350,6 +351,11 @@ namespace viscoslide
     double tau_arm;   // relaxation time of the Maxwell arm
     double tau_ref;   // the time unit of V_hat and time_over_tau (= 1)
   };
+
+  // The solid of the parameters in internal units: E0 = 1 - nu^2, so that
+  // E0* = 1, and the arms' times in tau_ref.
+  ViscoelasticSolid
+  make_solid(const Parameters::AllParameters &p, const Scales &scales);
 } // namespace viscoslide
 
 #endif

@@ -129,12 +129,7 @@ namespace viscoslide
               parameters.output.verbosity != Parameters::Verbosity::quiet)
     , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
     , scales(parameters)
-    , material(1. - std::pow(parameters.material.poisson_ratio, 2),
-               (1. - std::pow(parameters.material.poisson_ratio, 2)) /
-                 parameters.material.E0_over_Einf,
-               parameters.material.poisson_ratio,
-               scales.tau_arm,
-               parameters.material.prony_series)
+    , material(make_solid(parameters, scales))
     , law(create_interaction_law(parameters.adhesion.law,
                                  scales.dgamma,
                                  scales.eps))
@@ -471,8 +466,9 @@ namespace viscoslide
     auto set_speed = [this, target](const double log_V) {
       V_hat =
         std::abs(log_V - std::log(target)) < 1e-12 ? target : std::exp(log_V);
+      // The factorization of the speed before stays a good preconditioner
+      // (it is renewed when GMRES needs too many iterations with it).
       compliance->set_speed(V_hat * scales.eps / scales.tau_ref);
-      preconditioner.reset();
     };
     if (V_hat == 0)
       {

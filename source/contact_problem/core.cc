@@ -25,12 +25,7 @@ namespace viscoslide
             TimerOutput::never,
             TimerOutput::wall_times)
     , scales(parameters)
-    , material(1. - std::pow(parameters.material.poisson_ratio, 2),
-               (1. - std::pow(parameters.material.poisson_ratio, 2)) /
-                 parameters.material.E0_over_Einf,
-               parameters.material.poisson_ratio,
-               scales.tau_arm,
-               parameters.material.prony_series)
+    , material(make_solid(parameters, scales))
     , law(create_interaction_law(parameters.adhesion.law,
                                  scales.dgamma,
                                  scales.eps))
@@ -172,9 +167,17 @@ namespace viscoslide
             if (its < 0)
               return false;
           }
-        // Under force control delta is part of the converged state.
+        // Under force control delta is part of the converged state. After
+        // a jump the contact edges may have moved by hundreds of eps into
+        // coarse cells, where an edge stops that a resolved surface would
+        // carry on: there the mesh follows the solution until it no longer
+        // changes (doc/model.md, Adaptive mesh).
+        const unsigned int cycles =
+          relaxed && prm.mesh.max_adaptation_cycles > 0
+            ? std::max(64u, prm.mesh.max_adaptation_cycles)
+            : prm.mesh.max_adaptation_cycles;
         const int more = resolve_on_adapted_meshes(
-          prm.mesh.max_adaptation_cycles,
+          cycles,
           [this] { return adapt_mesh(); },
           [this] {
             const LoadState converged = current;

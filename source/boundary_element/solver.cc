@@ -372,11 +372,11 @@ namespace viscoslide
       dashpot         = 0;
       return steps;
     };
-    // Without contact, the surface jumps in: Newton's method would land
-    // anywhere, also on the unloading (JKR) branch of a contact far wider
-    // than the one the surface first reaches; the pseudo-transient
-    // relaxation follows the jump as an overdamped motion would, like the
-    // finite-element approach.
+    // Without contact the surface jumps in. Newton's method from the flat
+    // surface lands on whichever equilibrium its steps reach; the
+    // pseudo-transient relaxation follows the jump as an overdamped motion
+    // would, to the first equilibrium on its way, as the finite-element
+    // approach does.
     assemble(false);
     const bool in_contact = *std::min_element(gaps.begin(), gaps.end()) <
                             prm.adhesion.contact_gap * scales.eps;

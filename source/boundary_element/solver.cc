@@ -262,20 +262,23 @@ namespace viscoslide
   double
   BoundaryElementSolver::residual_norm() const
   {
+    // The l2 norm of the displacement misfit: a smooth merit function for
+    // the line search (the largest misfit alone stalled it at the contact
+    // edges). With it the load equation relative to the total absolute
+    // traction, as the finite-element solvers measure their residual.
     const unsigned int n        = u.size();
     double             misfit   = 0;
     double             absolute = 0;
     for (unsigned int j = 0; j < n; ++j)
       {
-        misfit = std::max(misfit, std::abs(residual[j]));
+        misfit += residual[j] * residual[j];
         absolute += std::abs(traction[j]) * dx;
       }
-    // The load equation relative to the total absolute traction, as the
-    // finite-element solvers measure their residual.
-    const double load = std::abs(residual[n]) * scales.sigma_max /
-                        (absolute + scales.sigma_max * dx);
-    return std::max(misfit / scales.eps, load);
+    const double load =
+      residual[n] * scales.sigma_max / (absolute + scales.sigma_max * dx);
+    return std::sqrt(misfit / (scales.eps * scales.eps) + load * load);
   }
+
 
 
   void
@@ -422,18 +425,25 @@ namespace viscoslide
         const Vector<double> u_at = u;
         const double         delta_at = delta;
         set(next);
-        // Secant predictor from the step before: without it a step of
-        // the approach starts with the contact inside the repulsive wall.
-        if (u_before.size() == u.size())
+        // Secant predictor from the step before, then no predicted gap
+        // below the smaller of its present one and eps: a point that the
+        // step before drew into contact would otherwise be extrapolated
+        // deep into the repulsive wall (and without a step before, the
+        // contact moved with delta), where the traction is huge and
+        // Newton's method crawls back.
+        const double ratio =
+          u_before.size() == u.size() ? (next - at) / (at - at_before) : 0.;
+        const bool secant = ratio != 0. && std::abs(ratio) <= 2;
+        if (secant && hold_force)
+          delta += ratio * (delta_at - delta_before);
+        for (unsigned int j = 0; j < u.size(); ++j)
           {
-            const double ratio = (next - at) / (at - at_before);
-            if (std::abs(ratio) <= 2)
-              {
-                for (unsigned int j = 0; j < u.size(); ++j)
-                  u[j] += ratio * (u_at[j] - u_before[j]);
-                if (hold_force)
-                  delta += ratio * (delta_at - delta_before);
-              }
+            if (secant)
+              u[j] += ratio * (u_at[j] - u_before[j]);
+            const double g_at = scales.eps + h[j] - delta_at - u_at[j];
+            u[j] =
+              std::min(u[j],
+                       scales.eps + h[j] - delta - std::min(g_at, scales.eps));
           }
         if (solve() >= 0)
           {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace viscoslide
 {
@@ -75,10 +76,11 @@ namespace viscoslide
           lu(i, m) = force ? border : 0.;
           lu(m, i) = force ? load_weight[i] / force_scale : 0.;
         }
-      lu(m, m) =
-        force ? std::accumulate(load_weight.begin(), load_weight.end(), 0.) /
-                  force_scale
-              : 1.;
+      // Without a stiff point (no contact) the load row is empty: the
+      // identity there keeps the factorization regular.
+      const double corner =
+        std::accumulate(load_weight.begin(), load_weight.end(), 0.);
+      lu(m, m) = force && corner != 0. ? corner / force_scale : 1.;
       lu.compute_lu_factorization();
     }
 

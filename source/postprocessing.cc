@@ -120,8 +120,8 @@ namespace viscoslide
 
     const MPI_Comm comm = dofs.get_communicator();
     return {Utilities::MPI::sum(Fn, comm),
-            Utilities::MPI::sum(Ft, comm),
             Utilities::MPI::sum(Fh, comm),
+            Utilities::MPI::sum(Ft, comm),
             Utilities::MPI::sum(L, comm),
             Utilities::MPI::sum(F_abs, comm),
             Utilities::MPI::min(g_min, comm)};

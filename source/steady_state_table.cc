@@ -29,8 +29,9 @@ namespace viscoslide
             "delta_hat",
             "F_n_hat",
             "F_t_hat",
-            "F_t_profile_hat",
+            "F_t_contact_set_hat",
             "mu",
+            "mu_contact_set",
             "mu_energy",
             "L_hat",
             "dissipation_rate_hat",
@@ -53,9 +54,10 @@ namespace viscoslide
   {
     const double V  = V_hat * scales.eps / scales.tau_ref;
     const double Fn = q.normal_force, Ft = q.tangential_force;
-    const double mu        = std::abs(Ft / Fn);
-    const double mu_energy = std::abs(dissipation_rate / V / Fn);
-    using F                = CsvTable;
+    const double mu             = std::abs(Ft / Fn);
+    const double mu_contact_set = std::abs(q.contact_set_tangential_force / Fn);
+    const double mu_energy      = std::abs(dissipation_rate / V / Fn);
+    using F                     = CsvTable;
     if (!table)
       table =
         std::make_unique<CsvTable>(filename, columns(), version_string(), comm);
@@ -71,8 +73,10 @@ namespace viscoslide
        {"delta_hat", F::format(delta / scales.eps)},
        {"F_n_hat", F::format(Fn / scales.force)},
        {"F_t_hat", F::format(Ft / scales.force)},
-       {"F_t_profile_hat", F::format(q.profile_force / scales.force)},
+       {"F_t_contact_set_hat",
+        F::format(q.contact_set_tangential_force / scales.force)},
        {"mu", F::format(mu)},
+       {"mu_contact_set", F::format(mu_contact_set)},
        {"mu_energy", F::format(mu_energy)},
        {"L_hat", F::format(q.contact_length / scales.R)},
        {"dissipation_rate_hat",
@@ -82,7 +86,8 @@ namespace viscoslide
        {"sliding_distance_over_eps", F::format(distance)},
        {"time_constant", Parameters::to_string(prm.material.time_constant)},
        {"solver", Parameters::to_string(solver)}});
-    out << "mu = " << mu << ", mu_energy = " << mu_energy
+    out << "mu = " << mu << ", mu_contact_set = " << mu_contact_set
+        << ", mu_energy = " << mu_energy
         << ", L_hat = " << q.contact_length / scales.R
         << ", F_n_hat = " << Fn / scales.force << std::endl;
     // The traction law is conservative, so in a steady state the work of
@@ -93,7 +98,7 @@ namespace viscoslide
     // mu_energy 1e-3 (elastic limits) the ratio is noise.
     if (mu_energy > 1e-3)
       {
-        const double       balance = q.profile_force * V / dissipation_rate - 1;
+        const double balance = q.tangential_force * V / dissipation_rate - 1;
         std::ostringstream percent;
         percent << std::showpos << std::fixed << std::setprecision(2)
                 << 100 * balance << " %";

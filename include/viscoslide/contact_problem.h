@@ -326,8 +326,8 @@ namespace viscoslide
       {
         delta,
         normal_force,
+        contact_set_tangential_force,
         tangential_force,
-        profile_force,
         contact_length,
         dissipation_rate,
         n_values

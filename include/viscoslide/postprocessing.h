@@ -25,11 +25,15 @@ namespace viscoslide
   // Forces are per unit length (2D), in internal units.
   struct SurfaceQuantities
   {
-    double normal_force;     // Fn = integral of p = -p_LJ (compressive > 0)
-    double tangential_force; // Ft = integral over L of p du_y/dx (eq. 2)
-    double profile_force;    // integral of p h'(x - s): x force on indenter
-    double contact_length;   // measure of {g < contact gap threshold}
-    double absolute_force;   // integral of |p|, the residual scale
+    double normal_force; // Fn = integral of p = -p_LJ (compressive > 0)
+    // The x force on the indenter, integral of p h'(x - s) over the whole
+    // surface: the friction force (eq. 2 over the whole surface).
+    double tangential_force;
+    // Eq. 2 restricted to the contact set g < contact gap threshold, as
+    // the paper reports it; it misses the process zone's tension.
+    double contact_set_tangential_force;
+    double contact_length; // measure of {g < contact gap threshold}
+    double absolute_force; // integral of |p|, the residual scale
     double minimum_gap;
   };
 

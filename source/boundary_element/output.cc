@@ -19,12 +19,12 @@ namespace viscoslide
         const double p = -traction[j];
         q.normal_force += p * dx;
         q.absolute_force += std::abs(p) * dx;
-        q.profile_force += p * indenter->slope(x[j]) * dx;
+        q.tangential_force += p * indenter->slope(x[j]) * dx;
         if (gaps[j] < gc)
           {
             const double slope =
               (u[(j + 1) % n] - u[(j + n - 1) % n]) / (2 * dx);
-            q.tangential_force += p * slope * dx;
+            q.contact_set_tangential_force += p * slope * dx;
           }
         q.minimum_gap = std::min(q.minimum_gap, gaps[j]);
         // The contact set between j and j + 1, the gap linear in between.

@@ -68,7 +68,7 @@ namespace viscoslide
   // delta), Ft and L over the two halves of the last window of sliding
   // differ by less than the tolerance relative to their size (or a floor
   // for small values). Means, not single steps: with adhesion the contact
-  // edges jump from node to node, and Ft (eq. 2) flickers with the period
+  // edges jump from node to node, and Ft flickers with the period
   // of the finest cell by up to tens of percent where V tau is below it,
   // about a steady mean.
   bool
@@ -114,9 +114,10 @@ namespace viscoslide
       window_mean(committed.s - slide_plan.window, committed.s);
     SurfaceQuantities q = last_quantities;
     q.normal_force      = mean.value[Sample::normal_force];
-    q.tangential_force  = mean.value[Sample::tangential_force];
-    q.profile_force     = mean.value[Sample::profile_force];
-    q.contact_length    = mean.value[Sample::contact_length];
+    q.contact_set_tangential_force =
+      mean.value[Sample::contact_set_tangential_force];
+    q.tangential_force = mean.value[Sample::tangential_force];
+    q.contact_length   = mean.value[Sample::contact_length];
     steady_state_table.add_row(prm.sliding.speed,
                                mean.value[Sample::delta],
                                q,
@@ -178,8 +179,8 @@ namespace viscoslide
         samples.push_back({committed.s,
                            {committed.delta,
                             q.normal_force,
+                            q.contact_set_tangential_force,
                             q.tangential_force,
-                            q.profile_force,
                             q.contact_length,
                             last_dissipation_rate}});
         steady = window_is_steady();

@@ -341,6 +341,9 @@ namespace viscoslide
              MPI_Comm    comm,
              const bool  resume = false)
     {
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        for (const auto &note : c.parameters.notes)
+          std::cout << note << std::endl;
       try
         {
           if (c.parameters.sliding.solver ==

@@ -158,6 +158,7 @@ namespace viscoslide
       double    layer_thickness;
       double    domain_width;
       double    domain_height;
+      double    wake_lengths;
 
       static void
       declare(ParameterHandler &prm);
@@ -300,14 +301,27 @@ namespace viscoslide
       BoundaryElement boundary_element;
       Sweep           sweep;
 
+      // What the program changed in the case or doubts about it, said
+      // once when the case starts (for example the block widened to hold
+      // the wake).
+      std::vector<std::string> notes;
+
       static void
       declare(ParameterHandler &prm);
       void
       parse(ParameterHandler &prm);
 
+      // The creep (retardation) time of the slowest arm, in the time unit
+      // of V_hat: V_hat times it is the wake length behind the contact in
+      // eps.
+      double
+      longest_creep_time() const;
+
     private:
       void
       check_consistency() const;
+      void
+      fit_block_to_wake();
     };
 
     // Bad input: the message names the entry, its value and what is

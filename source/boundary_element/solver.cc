@@ -189,14 +189,13 @@ namespace viscoslide
   void
   BoundaryElementSolver::fit_period(const double V)
   {
-    const double tau_c =
-      material.longest_relaxation_time() / prm.material.E0_over_Einf;
-    const double       period = prm.boundary_element.period > 0
-                                  ? prm.boundary_element.period * scales.eps
-                                  : std::max(prm.geometry.domain_width * scales.eps,
-                                       prm.boundary_element.wake_periods * V *
-                                         scales.eps / scales.tau_ref * tau_c);
-    const unsigned int n      = fft_size(period / dx);
+    const double wake = V * prm.longest_creep_time() * scales.eps;
+    const double period =
+      prm.boundary_element.period > 0
+        ? prm.boundary_element.period * scales.eps
+        : std::max(prm.geometry.domain_width * scales.eps,
+                   prm.boundary_element.wake_periods * wake);
+    const unsigned int n = fft_size(period / dx);
     if (n > u.size() || 4 * n < u.size())
       make_grid(n);
   }

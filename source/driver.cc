@@ -322,6 +322,13 @@ namespace viscoslide
                              "# " + version_string() + "\n" + c.parameter_text);
             write_atomically(dir / "parameters.json", c.parameter_json);
             write_atomically(dir / "version.txt", version_string() + "\n");
+            // What the program changed in the case (the block fitted to
+            // the wake), next to the parameters that do not show it.
+            std::string notes;
+            for (const auto &note : c.parameters.notes)
+              notes += note + "\n";
+            if (!notes.empty())
+              write_atomically(dir / "notes.txt", notes);
           }
         catch (std::exception &e)
           {

@@ -587,10 +587,12 @@ namespace viscoslide
         "Under force control it widens the block to at least this many "
         "wake lengths of the fastest listed speed and deepens a "
         "half-plane to a quarter of that; the boundary elements approach "
-        "on the same depth. Under displacement control the block stays "
-        "as given (it sets the reference of delta) and a warning says "
-        "when it is too small; a layer is widened under either control. "
-        "0: Domain width and height as given.");
+        "on the same depth. Under displacement and spring control the "
+        "block stays as given (it sets the reference of delta) and a "
+        "warning says when it is too small; a layer is widened under "
+        "every control. Set 0 to keep Domain width and height as given, "
+        "for example for a periodic profile whose wavelength is the "
+        "width, or with Mesh/Uniform surface (which keeps them anyway).");
       prm.leave_subsection();
     }
 
@@ -1210,8 +1212,8 @@ namespace viscoslide
       boundary_element.parse(prm);
       sweep.parse(prm);
       solver.verbose = output.verbosity == Verbosity::verbose;
-      fit_block_to_wake();
       check_consistency();
+      fit_block_to_wake();
     }
 
 
@@ -1236,8 +1238,10 @@ namespace viscoslide
     void
     AllParameters::fit_block_to_wake()
     {
+      // A uniform surface would grow with the block.
       if (sliding.solver == SlidingSolver::transient ||
-          geometry.wake_lengths == 0 || sliding.speeds.empty())
+          geometry.wake_lengths == 0 || sliding.speeds.empty() ||
+          mesh.uniform_surface)
         return;
       const double V =
         *std::max_element(sliding.speeds.begin(), sliding.speeds.end());
@@ -1259,7 +1263,7 @@ namespace viscoslide
              << " eps widened to " << geometry.domain_width << " x "
              << geometry.height()
              << " ('Geometry/Wake lengths' = " << geometry.wake_lengths << ")";
-      else if (fem && (W0 < width || H0 < depth))
+      else if (fem && (W0 < width || (!layer && H0 < depth)))
         note << "Warning: the wake, V tau_c = " << wake << " eps at V_hat " << V
              << ", does not fit the block of " << W0 << " x " << H0
              << " eps ('Geometry/Wake lengths' = " << geometry.wake_lengths

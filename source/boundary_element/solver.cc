@@ -529,6 +529,36 @@ namespace viscoslide
   }
 
 
+  // Unloading in steps of the Approach increment down to Retract to; the
+  // minimum force on the way is the pull-off force under displacement
+  // control. The jump out of contact is relaxed as the jump in is.
+  void
+  BoundaryElementSolver::retract(
+    const std::function<void(double)>              &set,
+    const std::function<void(const std::string &)> &add_row)
+  {
+    const auto report = [&] {
+      add_row("retract");
+      pcout << "Retract delta_hat = " << delta / scales.eps
+            << ": F_n_hat = " << last_quantities.normal_force / scales.force
+            << ", L_hat = " << last_quantities.contact_length / scales.R
+            << std::endl;
+    };
+    if (!follow(delta,
+                prm.loading.retract_to * scales.eps,
+                prm.loading.increment * scales.eps,
+                prm.loading.minimum_increment * scales.eps,
+                set,
+                report))
+      throw std::runtime_error(
+        "the boundary-element solver failed in the retraction at "
+        "delta_hat = " +
+        CsvTable::format(delta / scales.eps) +
+        " (Newton's method and the relaxation did not converge with "
+        "the Minimum approach increment)");
+  }
+
+
   void
   BoundaryElementSolver::approach_phase()
   {
@@ -596,24 +626,31 @@ namespace viscoslide
         CsvTable::format(delta / scales.eps) +
         " (Newton's method and the relaxation did not converge with "
         "the Minimum approach increment)");
-    if (!prm.loading.has_target_load())
-      return;
-    if (!done)
-      throw Parameters::ExcInvalidInput(
-        "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
-        " was not reached by 'Loading/Final approach' = " +
-        CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
-        CsvTable::format(last_quantities.normal_force / scales.force) +
-        "); raise the Final approach");
-    hold_force   = true;
-    target_force = F;
-    preconditioner.reset();
-    if (solve() < 0)
-      throw std::runtime_error("the boundary-element solver could not hold "
-                               "the Target load after the approach");
-    add_row("load");
-    pcout << "Load F_hat = " << prm.loading.target_load
-          << " reached at delta_hat = " << delta / scales.eps << std::endl;
+    if (prm.loading.has_target_load())
+      {
+        if (!done)
+          throw Parameters::ExcInvalidInput(
+            "'Loading/Target load' = " +
+            CsvTable::format(prm.loading.target_load) +
+            " was not reached by 'Loading/Final approach' = " +
+            CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
+            CsvTable::format(last_quantities.normal_force / scales.force) +
+            "); raise the Final approach");
+        hold_force   = true;
+        target_force = F;
+        preconditioner.reset();
+        if (solve() < 0)
+          throw std::runtime_error("the boundary-element solver could not "
+                                   "hold the Target load after the approach");
+        add_row("load");
+        pcout << "Load F_hat = " << prm.loading.target_load
+              << " reached at delta_hat = " << delta / scales.eps << std::endl;
+      }
+    if (prm.loading.retract)
+      {
+        hold_force = false;
+        retract(set, add_row);
+      }
   }
 
 

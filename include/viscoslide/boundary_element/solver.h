@@ -140,6 +140,9 @@ namespace viscoslide
       const std::function<bool()>       &done = [] { return false; });
     void
     approach_phase();
+    void
+    retract(const std::function<void(double)>              &set,
+            const std::function<void(const std::string &)> &add_row);
 
     // The traction q_j, its tangent dq/dg and the gaps. [output.cc]
     void

@@ -674,7 +674,10 @@ namespace viscoslide
                         "false",
                         Patterns::Bool(),
                         "After approach (and hold) retract to Retract to, "
-                        "completing a loading-unloading cycle.");
+                        "completing a loading-unloading cycle; the minimum "
+                        "force on the way is the pull-off force. Without "
+                        "sliding (Sliding speed = 0) with every solver; "
+                        "the boundary elements retract quasi-statically.");
       prm.declare_entry("Retract to",
                         "-3",
                         Patterns::Double(),
@@ -1233,8 +1236,8 @@ namespace viscoslide
 
     // Measured on Fig. 3 (muT 6.08, R_hat 1e4, F_hat 1) at V_hat 1000,
     // against the boundary elements: a block of 2 x 0.4 wake lengths gives
-    // a friction 10 % low, 8 x 2 wake lengths 2 % low (doc/model.md, Block
-    // and wake).
+    // a friction 10 % low, 8 x 2 wake lengths 2 % low, 20 x 5 wake lengths
+    // (the default) 0.5 % low (doc/model.md, Block and wake).
     void
     AllParameters::fit_block_to_wake()
     {

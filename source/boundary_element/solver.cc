@@ -534,7 +534,6 @@ namespace viscoslide
   // control. The jump out of contact is relaxed as the jump in is.
   void
   BoundaryElementSolver::retract(
-    const std::function<void(double)>              &set,
     const std::function<void(const std::string &)> &add_row)
   {
     const auto report = [&] {
@@ -544,16 +543,29 @@ namespace viscoslide
             << ", L_hat = " << last_quantities.contact_length / scales.R
             << std::endl;
     };
-    if (!follow(delta,
-                prm.loading.retract_to * scales.eps,
-                prm.loading.increment * scales.eps,
-                prm.loading.minimum_increment * scales.eps,
-                set,
-                report))
+    move_indenter(prm.loading.retract_to, "retraction", report);
+  }
+
+
+  // delta to delta_hat = `to` in Approach increments, cut down to the
+  // Minimum approach increment where a step fails.
+  void
+  BoundaryElementSolver::move_indenter(const double                 to,
+                                       const std::string           &phase,
+                                       const std::function<void()> &report,
+                                       const std::function<bool()> &done)
+  {
+    if (!follow(
+          delta,
+          to * scales.eps,
+          prm.loading.increment * scales.eps,
+          prm.loading.minimum_increment * scales.eps,
+          [this](const double d) { delta = d; },
+          report,
+          done))
       throw std::runtime_error(
-        "the boundary-element solver failed in the retraction at "
-        "delta_hat = " +
-        CsvTable::format(delta / scales.eps) +
+        "the boundary-element solver failed in the " + phase +
+        " at delta_hat = " + CsvTable::format(delta / scales.eps) +
         " (Newton's method and the relaxation did not converge with "
         "the Minimum approach increment)");
   }
@@ -566,9 +578,8 @@ namespace viscoslide
     substrate = Parameters::Substrate::layer;
     thickness = prm.geometry.height() * scales.eps;
     fit_period(0.);
-    hold_force     = false;
-    delta          = prm.loading.initial_approach * scales.eps;
-    const auto set = [this](const double d) { delta = d; };
+    hold_force = false;
+    delta      = prm.loading.initial_approach * scales.eps;
     if (solve() < 0)
       throw std::runtime_error(
         "the boundary-element solver found no equilibrium at the initial "
@@ -613,19 +624,9 @@ namespace viscoslide
         last_quantities.minimum_gap < prm.adhesion.contact_gap * scales.eps &&
         last_quantities.normal_force >= F;
     };
-    if (!follow(delta,
-                prm.loading.final_approach * scales.eps,
-                prm.loading.increment * scales.eps,
-                prm.loading.minimum_increment * scales.eps,
-                set,
-                report,
-                [&done] { return done; }))
-      throw std::runtime_error(
-        "the boundary-element solver failed in the approach at "
-        "delta_hat = " +
-        CsvTable::format(delta / scales.eps) +
-        " (Newton's method and the relaxation did not converge with "
-        "the Minimum approach increment)");
+    move_indenter(prm.loading.final_approach, "approach", report, [&done] {
+      return done;
+    });
     if (prm.loading.has_target_load())
       {
         if (!done)
@@ -649,7 +650,7 @@ namespace viscoslide
     if (prm.loading.retract)
       {
         hold_force = false;
-        retract(set, add_row);
+        retract(add_row);
       }
   }
 

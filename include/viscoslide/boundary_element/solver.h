@@ -141,8 +141,13 @@ namespace viscoslide
     void
     approach_phase();
     void
-    retract(const std::function<void(double)>              &set,
-            const std::function<void(const std::string &)> &add_row);
+    retract(const std::function<void(const std::string &)> &add_row);
+    void
+    move_indenter(
+      double                       to,
+      const std::string           &phase,
+      const std::function<void()> &report,
+      const std::function<bool()> &done = [] { return false; });
 
     // The traction q_j, its tangent dq/dg and the gaps. [output.cc]
     void

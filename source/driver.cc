@@ -14,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 namespace viscoslide
 {
@@ -70,10 +71,14 @@ namespace viscoslide
         std::vector<Setting> settings;
       };
       std::vector<std::vector<Choice>> dimensions;
-      auto words = [](const std::vector<double> &v) {
+      // The entries of a list as the words of a parameter file.
+      auto words = [](const auto &v) {
         std::vector<std::string> w;
-        for (const double x : v)
-          w.push_back(CsvTable::format(x));
+        for (const auto x : v)
+          if constexpr (std::is_same_v<decltype(x), const double>)
+            w.push_back(CsvTable::format(x));
+          else
+            w.push_back(Parameters::to_string(x));
         return w;
       };
       auto add = [&](const std::vector<std::string> &values,
@@ -108,16 +113,10 @@ namespace viscoslide
       add(words(sw.loads), "F", [](const std::string &v) {
         return std::vector<Setting>{{"Loading", "Target load", v}};
       });
-      std::vector<std::string> solvers;
-      for (const auto s : sw.solvers)
-        solvers.push_back(Parameters::to_string(s));
-      add(solvers, "", [](const std::string &v) {
+      add(words(sw.solvers), "", [](const std::string &v) {
         return std::vector<Setting>{{"Sliding", "Solver", v}};
       });
-      std::vector<std::string> controls;
-      for (const auto c : sw.controls)
-        controls.push_back(Parameters::to_string(c));
-      add(controls, "", [](const std::string &v) {
+      add(words(sw.controls), "", [](const std::string &v) {
         return std::vector<Setting>{{"Sliding", "Control", v}};
       });
       add(words(sw.spring_stiffnesses), "k", [](const std::string &v) {

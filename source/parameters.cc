@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace viscoslide
 {
@@ -1169,12 +1170,15 @@ namespace viscoslide
       numbers("Layer thicknesses", true, &thicknesses);
       approaches = numbers("Approaches", false);
       loads      = numbers("Loads", false);
-      controls.clear();
-      for (const auto &w : Utilities::split_string_list(prm.get("Controls")))
-        controls.push_back(parse_choice<Control>(w, "Sweep/Controls"));
-      solvers.clear();
-      for (const auto &w : Utilities::split_string_list(prm.get("Solvers")))
-        solvers.push_back(parse_choice<SlidingSolver>(w, "Sweep/Solvers"));
+      // Choices of a list, each checked, named in the message.
+      auto choices = [&](const std::string &name, auto &list) {
+        using Choice = typename std::decay_t<decltype(list)>::value_type;
+        list.clear();
+        for (const auto &w : Utilities::split_string_list(prm.get(name)))
+          list.push_back(parse_choice<Choice>(w, "Sweep/" + name));
+      };
+      choices("Controls", controls);
+      choices("Solvers", solvers);
       spring_stiffnesses = numbers("Spring stiffnesses", true);
       shapes = Utilities::split_string_list(prm.get("Indenter shapes"));
       prm.leave_subsection();
@@ -1223,14 +1227,8 @@ namespace viscoslide
     double
     AllParameters::longest_creep_time() const
     {
-      double longest = 1.;
-      if (!material.prony_series.empty())
-        {
-          longest = 0.;
-          for (const auto &arm : material.prony_series)
-            longest = std::max(longest, arm.time_ratio);
-        }
-      return Scales(*this).tau_arm * longest / material.E0_over_Einf;
+      return make_solid(*this, Scales(*this)).longest_relaxation_time() /
+             material.E0_over_Einf;
     }
 
 

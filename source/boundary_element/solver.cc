@@ -281,7 +281,6 @@ namespace viscoslide
   }
 
 
-
   void
   BoundaryElementSolver::compute_update()
   {

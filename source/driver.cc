@@ -359,6 +359,16 @@ namespace viscoslide
             ContactProblem(c.parameters, comm, &progress).run(resume);
           return "";
         }
+      catch (ExceptionBase &e)
+        {
+          // A check inside deal.II, p4est or a solver library: its
+          // message without the source location and stack trace.
+          std::ostringstream info;
+          e.print_info(info);
+          return "internal error (" + std::string(e.get_exc_name()) +
+                 "): " + one_line(info.str()) +
+                 " Please report it with the case's parameters.prm.";
+        }
       catch (std::exception &e)
         {
           const std::string what = e.what();
@@ -662,10 +672,14 @@ namespace viscoslide
       {
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           for (const auto &c : cases)
-            std::cout << (top / c.name).string() << " "
-                      << std::hash<std::string>()(
-                           case_identity(c.parameter_text))
-                      << std::endl;
+            {
+              std::cout << (top / c.name).string() << " "
+                        << std::hash<std::string>()(
+                             case_identity(c.parameter_text))
+                        << std::endl;
+              for (const auto &note : c.parameters.notes)
+                std::cout << "  " << note << std::endl;
+            }
         return 0;
       }
     if (cases.size() == 1 && cases[0].name.empty())

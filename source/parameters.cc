@@ -1221,6 +1221,8 @@ namespace viscoslide
       solver.verbose = output.verbosity == Verbosity::verbose;
       check_consistency();
       fit_block_to_wake();
+      check_mesh_can_hold_case();
+      warn_about_accuracy();
     }
 
 
@@ -1274,6 +1276,135 @@ namespace viscoslide
       else
         return;
       notes.push_back(note.str());
+    }
+
+    namespace
+    {
+      // The finest cell p4est can make from the coarse cells is 2^-30 of
+      // theirs; the refinement stays well below that.
+      constexpr double max_refinement_levels = 24;
+      // make_block() tiles the block with squares of its smaller side.
+      constexpr double max_aspect_ratio = 1e4;
+      // Beyond this distance (in eps) the interaction laws are negligible.
+      constexpr double interaction_range = 5;
+
+      // The half-width of the elastic (Hertz) line contact of a cylinder of
+      // radius R under F_hat, with plane-strain modulus E_star.
+      std::string
+      num(const double x)
+      {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      }
+
+      double
+      hertz_half_width(const double                     F_hat,
+                       const double                     E_star,
+                       const Parameters::AllParameters &p)
+      {
+        const Scales s(p);
+        return std::sqrt(4. * std::max(F_hat, 0.) * s.force * s.R /
+                         (M_PI * E_star));
+      }
+    } // namespace
+
+
+    // Refuses, before a mesh is built, what the refinement cannot represent
+    // and a block the contact does not fit in.
+    void
+    AllParameters::check_mesh_can_hold_case() const
+    {
+      const double W = geometry.domain_width, H = geometry.height();
+      const std::string block = "the block of " + num(W) + " x " +
+                                num(H) + " eps";
+      require(std::max(W, H) / std::min(W, H) <= max_aspect_ratio,
+              block + " ('Geometry/Domain width', '" +
+                (geometry.substrate == Substrate::layer
+                   ? "Geometry/Layer thickness"
+                   : "Geometry/Domain height") +
+                "') has an aspect ratio above 1e4; the mesh tiles it with "
+                "squares of its smaller side");
+      const double levels = std::log2(std::min(W, H) / mesh.finest_cell);
+      require(levels <= max_refinement_levels,
+              entry("Mesh", "Finest surface cell", mesh.finest_cell) +
+                " is 2^" + num(std::ceil(levels)) +
+                " times smaller than the coarse cells of " + block +
+                "; at most 2^24 is allowed");
+      require(mesh.finest_cell >= 1e-3,
+              entry("Mesh", "Finest surface cell", mesh.finest_cell) +
+                " is below 1e-3 eps, far finer than the interaction law "
+                "needs (0.1 to 1 eps)");
+
+      if (mesh.uniform_surface) // a periodic profile covers the surface
+        return;
+      // The indenter, pressed to its final depth, must not reach the
+      // edges of the block within the range of the interaction.
+      const auto   profile = create_indenter(indenter, adhesion.R_over_eps, W);
+      double       lowest   = std::numeric_limits<double>::max();
+      const double rim =
+        std::min(profile->profile(-W / 2), profile->profile(W / 2));
+      for (int i = 0; i <= 1000; ++i)
+        lowest = std::min(lowest, profile->profile(-W / 2 + W * i / 1000.));
+      const bool   force = loading.has_target_load();
+      const double stiffest =
+        std::max(1., 1. / material.E0_over_Einf); // plane-strain moduli
+      double depth = std::max(loading.final_approach, 0.);
+      if (force)
+        depth = geometry.substrate == Substrate::half_plane ?
+                  std::pow(hertz_half_width(loading.target_load, stiffest,
+                                            *this), 2) /
+                    (2 * adhesion.R_over_eps) :
+                  0.;
+      require(rim - lowest >= depth + interaction_range,
+              block + " is too narrow for the contact: its edges lie " +
+                num(rim - lowest) +
+                " eps above the lowest point of the indenter, which " +
+                (force ? "'Loading/Target load' = " +
+                           num(loading.target_load) +
+                           " presses about " + num(depth) +
+                           " eps deep (Hertz)" :
+                         entry("Loading", "Final approach",
+                               loading.final_approach) +
+                           " presses in") +
+                "; widen 'Geometry/Domain width'");
+    }
+
+
+    // Legal but known to be inaccurate: said when the case starts.
+    void
+    AllParameters::warn_about_accuracy()
+    {
+      // The cohesive zone of a crack under the law's peak stress: about
+      // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.
+      const Scales s(*this);
+      const double softest = std::min(1., 1. / material.E0_over_Einf);
+      const double zone =
+        M_PI / 8 * softest * s.dgamma / std::pow(s.sigma_max, 2);
+      if (adhesion.law != "repulsive" && adhesion.tabor_parameter > 0 &&
+          mesh.finest_cell > zone / 2)
+        {
+          std::ostringstream note;
+          note << "Warning: 'Mesh/Finest surface cell' = " << mesh.finest_cell
+               << " eps is coarser than half the adhesive zone (about "
+               << zone << " eps); expect the contact edges and the friction "
+               << "to be off by several percent";
+          notes.push_back(note.str());
+        }
+      if (!loading.has_target_load() || mesh.uniform_surface)
+        return;
+      const double width =
+        2 * hertz_half_width(loading.target_load, softest, *this);
+      if (width > geometry.domain_width / 4)
+        {
+          std::ostringstream note;
+          note << "Warning: the contact at 'Loading/Target load' = "
+               << loading.target_load << " is about " << width
+               << " eps wide (Hertz, relaxed modulus), more than a quarter of "
+               << "'Geometry/Domain width' = " << geometry.domain_width
+               << "; the block's edges will shift the results";
+          notes.push_back(note.str());
+        }
     }
 
     void

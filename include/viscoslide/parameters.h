@@ -322,6 +322,10 @@ namespace viscoslide
       check_consistency() const;
       void
       fit_block_to_wake();
+      void
+      check_mesh_can_hold_case() const;
+      void
+      warn_about_accuracy();
     };
 
     // Bad input: the message names the entry, its value and what is

@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <viscoslide/boundary_element/solver.h>
+#include <viscoslide/case_lock.h>
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/driver.h>
 #include <viscoslide/output.h>
@@ -234,6 +235,71 @@ namespace viscoslide
       return s;
     }
 
+    // A case's verdict and when it was written: a change between choosing
+    // the cases to run and starting one means that another invocation ran
+    // it meanwhile.
+    std::string
+    status_signature(const fs::path &folder)
+    {
+      std::error_code ec;
+      const auto      time = fs::last_write_time(folder / "status", ec);
+      return ec ? std::string()
+                : read_file(folder / "status") +
+                    std::to_string(time.time_since_epoch().count());
+    }
+
+    // Beside the case's folder, which a fresh run deletes.
+    std::string
+    lock_file(const fs::path &top, const std::string &name)
+    {
+      return (top / ("." + name + ".lock")).string();
+    }
+
+    bool
+    running_elsewhere(const fs::path &top, const std::string &name)
+    {
+      try
+        {
+          return !CaseLock(lock_file(top, name)).held();
+        }
+      catch (std::exception &)
+        {
+          return false;
+        }
+    }
+
+    // Takes the lock on the first process of `comm`; every process learns
+    // the outcome (and in `error` why the lock could not be tried).
+    enum class LockState
+    {
+      held,
+      busy,
+      error
+    };
+
+    LockState
+    take_lock(std::unique_ptr<CaseLock> &lock,
+              const std::string         &file,
+              MPI_Comm                   comm,
+              std::string               &error)
+    {
+      LockState state = LockState::held;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        try
+          {
+            lock = std::make_unique<CaseLock>(file);
+            if (!lock->held())
+              state = LockState::busy;
+          }
+        catch (std::exception &e)
+          {
+            state = LockState::error;
+            error = e.what();
+          }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      return Utilities::MPI::broadcast(comm, state, 0);
+    }
+
     // The rows of a case's steady_state.csv as column -> value maps.
     std::vector<std::map<std::string, std::string>>
     read_rows(const fs::path &csv)
@@ -345,11 +411,19 @@ namespace viscoslide
     run_case(const Case &c,
              Progress   &progress,
              MPI_Comm    comm,
-             const bool  resume = false)
+             const bool  resume,
+             const bool  to_screen = true)
     {
+      std::unique_ptr<ScreenLog> log;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
-        for (const auto &note : c.parameters.notes)
-          std::cout << note << std::endl;
+        {
+          log = std::make_unique<ScreenLog>(
+            (fs::path(c.parameters.output.directory) / "log.txt").string(),
+            to_screen,
+            resume);
+          for (const auto &note : c.parameters.notes)
+            std::cout << note << std::endl;
+        }
       try
         {
           if (c.parameters.sliding.solver ==
@@ -438,6 +512,7 @@ namespace viscoslide
       const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
       const fs::path dir(c.parameters.output.directory);
       const bool resume = options.resume && ContactProblem::has_checkpoint(dir);
+      std::unique_ptr<CaseLock> lock;
       try
         {
           if (resume)
@@ -458,8 +533,17 @@ namespace viscoslide
               OutputWriter::prepare_directory(dir.string(),
                                               options.overwrite,
                                               comm);
-              write_provenance(c, comm);
             }
+          std::string error;
+          const auto  state =
+            take_lock(lock, (dir / ".lock").string(), comm, error);
+          if (state == LockState::busy)
+            throw std::runtime_error("another viscoslide is running in '" +
+                                     dir.string() + "'; nothing was changed");
+          if (state == LockState::error)
+            throw std::runtime_error(error);
+          if (!resume)
+            write_provenance(c, comm);
         }
       catch (std::exception &e)
         {
@@ -536,13 +620,24 @@ namespace viscoslide
     }
 
 
-    // Case k of a sweep in its own folder; an interrupted case resumes
-    // from its checkpoint if asked to and its parameters are those of the
-    // file, otherwise it starts again.
-    void
+    // What a group of processes does with case k of a sweep.
+    enum class CaseOutcome
+    {
+      ran,
+      running_elsewhere,
+      finished_elsewhere
+    };
+
+    // Case k of a sweep in its own folder, under its lock: a case another
+    // process holds, or one that another invocation finished since the
+    // cases were chosen (its status changed from `signature`), is left
+    // alone. An interrupted case resumes from its checkpoint if asked to
+    // and its parameters are those of the file, otherwise it starts again.
+    CaseOutcome
     run_sweep_case(const std::size_t        k,
                    const std::vector<Case> &cases,
                    const fs::path          &top,
+                   const std::string       &signature,
                    const RunOptions        &options,
                    Progress                &progress,
                    MPI_Comm                 comm)
@@ -550,17 +645,27 @@ namespace viscoslide
       const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
       const Case    &c    = cases[k];
       const fs::path dir  = top / c.name;
+      std::unique_ptr<CaseLock> lock;
+      std::string               failure;
+      const auto state = take_lock(lock, lock_file(top, c.name), comm, failure);
+      if (state == LockState::busy)
+        return CaseOutcome::running_elsewhere;
+      if (Utilities::MPI::broadcast(comm,
+                                    root && state == LockState::held &&
+                                      status_signature(dir) != signature,
+                                    0))
+        return CaseOutcome::finished_elsewhere;
+
       progress.start_case(k + 1, c.name);
       const bool resume = options.resume && read_status(dir).state.empty() &&
                           ContactProblem::has_checkpoint(dir) &&
                           ran_with(dir, c);
-      std::string failure;
       try
         {
           std::error_code ec; // prepare_directory() reports the failure
-          if (root && !resume)
+          if (root && !resume && failure.empty())
             fs::remove_all(dir, ec);
-          if (!resume)
+          if (!resume && failure.empty())
             {
               OutputWriter::prepare_directory(dir.string(), true, comm);
               write_provenance(c, comm);
@@ -581,9 +686,9 @@ namespace viscoslide
           std::cout << std::endl;
         }
       if (failure.empty())
-        failure = run_case(c, progress, comm, resume);
+        failure = run_case(c, progress, comm, resume, options.jobs == 1);
       if (!root)
-        return;
+        return CaseOutcome::ran;
       try
         {
           write_status(dir, failure);
@@ -596,6 +701,54 @@ namespace viscoslide
       std::cout << "case " << k + 1 << "/" << cases.size() << " " << c.name
                 << ": " << (failure.empty() ? "done" : "FAILED: " + failure)
                 << "  [" << progress.report(1.) << "]" << std::endl;
+      return CaseOutcome::ran;
+    }
+
+
+    // The cases of the sweep that this invocation considers, run by groups
+    // of processes (options.jobs) side by side: each group takes the next
+    // case whose lock is free.
+    void
+    run_cases(const std::vector<Case>        &cases,
+              const fs::path                 &top,
+              const std::vector<char>        &to_run,
+              const std::vector<std::string> &signatures,
+              const RunOptions               &options,
+              MPI_Comm                        comm)
+    {
+      const unsigned int n_procs = Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int jobs    = std::min(options.jobs, n_procs);
+      MPI_Comm           group;
+      MPI_Comm_split(comm, rank * jobs / n_procs, rank, &group);
+      const bool group_root = Utilities::MPI::this_mpi_process(group) == 0;
+
+      Progress progress(cases.size(),
+                        std::count(to_run.begin(), to_run.end(), 1));
+      for (std::size_t k = 0; k < cases.size(); ++k)
+        {
+          std::string said;
+          if (to_run[k])
+            switch (run_sweep_case(
+              k, cases, top, signatures[k], options, progress, group))
+              {
+                case CaseOutcome::ran:
+                  break;
+                case CaseOutcome::running_elsewhere:
+                  said = "running in another process, skipped";
+                  break;
+                case CaseOutcome::finished_elsewhere:
+                  said = "finished by another process, skipped";
+                  break;
+              }
+          else if (options.only_case == 0 || options.only_case == k + 1)
+            said = read_status(top / cases[k].name).state + " earlier, skipped";
+          if (group_root && !said.empty() && (jobs == 1 || rank == 0))
+            std::cout << "case " << k + 1 << "/" << cases.size() << " "
+                      << cases[k].name << ": " << said << std::endl;
+        }
+      MPI_Comm_free(&group);
+      MPI_Barrier(comm);
     }
 
 
@@ -608,11 +761,23 @@ namespace viscoslide
     {
       const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
       std::vector<char> to_run(cases.size(), 1);
-      std::string       error;
-      if (root)
+      std::vector<std::string> signatures(cases.size());
+      std::string              error;
+      if (options.only_case > cases.size())
+        error = "--case " + std::to_string(options.only_case) +
+                ": the study has " + std::to_string(cases.size()) + " cases";
+      else if (root)
         error = select_cases(input, cases, top, options, to_run);
-      error  = Utilities::MPI::broadcast(comm, error, 0);
-      to_run = Utilities::MPI::broadcast(comm, to_run, 0);
+      for (std::size_t k = 0; k < cases.size(); ++k)
+        {
+          if (options.only_case != 0 && options.only_case != k + 1)
+            to_run[k] = 0;
+          if (root)
+            signatures[k] = status_signature(top / cases[k].name);
+        }
+      error      = Utilities::MPI::broadcast(comm, error, 0);
+      to_run     = Utilities::MPI::broadcast(comm, to_run, 0);
+      signatures = Utilities::MPI::broadcast(comm, signatures, 0);
       if (!error.empty())
         {
           if (root)
@@ -623,31 +788,38 @@ namespace viscoslide
       const unsigned int n_to_run = std::count(to_run.begin(), to_run.end(), 1);
       if (root)
         std::cout << version_string() << ", "
-                  << Utilities::MPI::n_mpi_processes(comm)
-                  << " MPI process(es)\nSweep of " << cases.size()
-                  << " cases into '" << top.string() << "': " << n_to_run
-                  << " to run, " << cases.size() - n_to_run
-                  << " finished earlier\n";
-      Progress progress(cases.size(), n_to_run);
-      for (std::size_t k = 0; k < cases.size(); ++k)
-        if (to_run[k])
-          run_sweep_case(k, cases, top, options, progress, comm);
-        else if (root)
-          std::cout << "case " << k + 1 << "/" << cases.size() << " "
-                    << cases[k].name << ": "
-                    << read_status(top / cases[k].name).state
-                    << " earlier, skipped\n";
+                  << Utilities::MPI::n_mpi_processes(comm) << " MPI process(es)"
+                  << (options.jobs > 1
+                        ? ", " + std::to_string(options.jobs) +
+                            " cases at once (their output in their log.txt)"
+                        : "")
+                  << "\nSweep of " << cases.size() << " cases into '"
+                  << top.string() << "': " << n_to_run << " to run\n";
+      run_cases(cases, top, to_run, signatures, options, comm);
 
-      // The table also when every case was skipped, and the verdict.
-      std::string failed;
+      // The table also when every case was skipped, and the verdict on
+      // the cases this invocation considered.
+      std::string failed, elsewhere;
       if (root)
         {
           write_sweep_table(top, cases);
-          for (const auto &c : cases)
-            if (read_status(top / c.name).state != "done")
-              failed += " " + c.name;
+          for (std::size_t k = 0; k < cases.size(); ++k)
+            {
+              const auto &name = cases[k].name;
+              if ((options.only_case != 0 && options.only_case != k + 1) ||
+                  read_status(top / name).state == "done")
+                continue;
+              if (read_status(top / name).state.empty() &&
+                  running_elsewhere(top, name))
+                elsewhere += " " + name;
+              else
+                failed += " " + name;
+            }
           std::cout << "\nSweep finished: " << top.string()
                     << "/steady_state.csv" << std::endl;
+          if (!elsewhere.empty())
+            std::cout << "still running in another process:" << elsewhere
+                      << std::endl;
           if (!failed.empty())
             std::cerr << "viscoslide: these cases failed (reasons in "
                       << (top / "steady_state.csv").string() << "):" << failed

@@ -14,8 +14,8 @@ namespace
 {
   const char *usage =
     "Usage: viscoslide [--overwrite] [--resume] [--redo failed|all] "
-    "[--dry-run] "
-    "PARAMETER_FILE.prm|.json\n"
+    "[--dry-run]\n"
+    "                  [--jobs N] [--case K] PARAMETER_FILE.prm|.json\n"
     "       viscoslide --print-parameters [prm|json]\n"
     "       viscoslide --help | --version\n"
     "\n"
@@ -33,7 +33,14 @@ namespace
     "  --redo failed|all   a sweep reruns its failed (or all) finished\n"
     "                      cases; by default they are skipped\n"
     "  --dry-run           check the file, list the case folders (with a\n"
-    "                      checksum of each case's parameters) and stop\n"
+    "                      checksum of each case's parameters and what\n"
+    "                      the program will change or doubts) and stop\n"
+    "  --jobs N            run N cases of a study at once, each on its own\n"
+    "                      share of the MPI processes (N <= processes)\n"
+    "  --case K            run only case K (1, 2, ... as --dry-run lists\n"
+    "                      them), e.g. the task index of a job array\n"
+    "A case another invocation is running (its lock file .NAME.lock is\n"
+    "held) is skipped, never touched.\n"
     "  --print-parameters  print every entry with default and documentation\n"
     "\n"
     "Run in parallel with: mpirun -np N viscoslide FILE.prm\n";
@@ -92,6 +99,29 @@ main(int argc, char *argv[])
             }
           options.redo = args[++i] == "all" ? RunOptions::Redo::all
                                             : RunOptions::Redo::failed;
+        }
+      else if (args[i] == "--jobs" || args[i] == "--case")
+        {
+          const std::string option = args[i];
+          int               n      = 0;
+          try
+            {
+              n =
+                i + 1 < args.size() ? Utilities::string_to_int(args[i + 1]) : 0;
+            }
+          catch (...)
+            {
+              n = 0;
+            }
+          if (n < 1)
+            {
+              if (root)
+                std::cerr << "viscoslide: " << option
+                          << " needs a positive whole number\n";
+              return 1;
+            }
+          ++i;
+          (option == "--jobs" ? options.jobs : options.only_case) = n;
         }
       else if (!args[i].empty() && args[i][0] == '-')
         {

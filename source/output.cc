@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
 #include <regex>
 #include <sstream>
 
@@ -169,6 +170,71 @@ namespace viscoslide
     if (!error.empty())
       throw Parameters::ExcInvalidInput(error);
   }
+
+  class ScreenLog::Tee : public std::streambuf
+  {
+  public:
+    Tee(std::streambuf *screen, std::streambuf *file)
+      : screen(screen)
+      , file(file)
+    {
+    }
+
+  protected:
+    int
+    overflow(const int c) override
+    {
+      if (c == traits_type::eof())
+        return traits_type::not_eof(c);
+      if (file->sputc(c) == traits_type::eof() ||
+          (screen != nullptr && screen->sputc(c) == traits_type::eof()))
+        return traits_type::eof();
+      return c;
+    }
+
+    std::streamsize
+    xsputn(const char *s, const std::streamsize n) override
+    {
+      file->sputn(s, n);
+      if (screen != nullptr)
+        screen->sputn(s, n);
+      return n;
+    }
+
+    int
+    sync() override
+    {
+      const int a = file->pubsync();
+      const int b = screen != nullptr ? screen->pubsync() : 0;
+      return a == 0 && b == 0 ? 0 : -1;
+    }
+
+  private:
+    std::streambuf *screen, *file;
+  };
+
+
+  ScreenLog::ScreenLog(const std::string &filename,
+                       const bool         to_screen,
+                       const bool         append)
+    : file(filename, append ? std::ios::app : std::ios::trunc)
+    , screen(std::cout.rdbuf())
+  {
+    // Without its log the run goes on, on the screen as before.
+    if (!file)
+      return;
+    std::cout.flush();
+    tee = std::make_unique<Tee>(to_screen ? screen : nullptr, file.rdbuf());
+    std::cout.rdbuf(tee.get());
+  }
+
+
+  ScreenLog::~ScreenLog()
+  {
+    std::cout.flush();
+    std::cout.rdbuf(screen);
+  }
+
 
   std::string
   OutputWriter::path(const std::string &filename) const

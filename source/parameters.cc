@@ -1315,9 +1315,9 @@ namespace viscoslide
     void
     AllParameters::check_mesh_can_hold_case() const
     {
-      const double W = geometry.domain_width, H = geometry.height();
-      const std::string block = "the block of " + num(W) + " x " +
-                                num(H) + " eps";
+      const double      W = geometry.domain_width, H = geometry.height();
+      const std::string block =
+        "the block of " + num(W) + " x " + num(H) + " eps";
       require(std::max(W, H) / std::min(W, H) <= max_aspect_ratio,
               block + " ('Geometry/Domain width', '" +
                 (geometry.substrate == Substrate::layer
@@ -1341,7 +1341,7 @@ namespace viscoslide
       // The indenter, pressed to its final depth, must not reach the
       // edges of the block within the range of the interaction.
       const auto   profile = create_indenter(indenter, adhesion.R_over_eps, W);
-      double       lowest   = std::numeric_limits<double>::max();
+      double       lowest  = std::numeric_limits<double>::max();
       const double rim =
         std::min(profile->profile(-W / 2), profile->profile(W / 2));
       for (int i = 0; i <= 1000; ++i)
@@ -1351,23 +1351,22 @@ namespace viscoslide
         std::max(1., 1. / material.E0_over_Einf); // plane-strain moduli
       double depth = std::max(loading.final_approach, 0.);
       if (force)
-        depth = geometry.substrate == Substrate::half_plane ?
-                  std::pow(hertz_half_width(loading.target_load, stiffest,
-                                            *this), 2) /
-                    (2 * adhesion.R_over_eps) :
-                  0.;
-      require(rim - lowest >= depth + interaction_range,
-              block + " is too narrow for the contact: its edges lie " +
-                num(rim - lowest) +
-                " eps above the lowest point of the indenter, which " +
-                (force ? "'Loading/Target load' = " +
-                           num(loading.target_load) +
-                           " presses about " + num(depth) +
-                           " eps deep (Hertz)" :
-                         entry("Loading", "Final approach",
-                               loading.final_approach) +
-                           " presses in") +
-                "; widen 'Geometry/Domain width'");
+        depth =
+          geometry.substrate == Substrate::half_plane
+            ? std::pow(hertz_half_width(loading.target_load, stiffest, *this),
+                       2) /
+                (2 * adhesion.R_over_eps)
+            : 0.;
+      require(
+        rim - lowest >= depth + interaction_range,
+        block + " is too narrow for the contact: its edges lie " +
+          num(rim - lowest) +
+          " eps above the lowest point of the indenter, which " +
+          (force ? "'Loading/Target load' = " + num(loading.target_load) +
+                     " presses about " + num(depth) + " eps deep (Hertz)"
+                 : entry("Loading", "Final approach", loading.final_approach) +
+                     " presses in") +
+          "; widen 'Geometry/Domain width'");
     }
 
 
@@ -1386,8 +1385,8 @@ namespace viscoslide
         {
           std::ostringstream note;
           note << "Warning: 'Mesh/Finest surface cell' = " << mesh.finest_cell
-               << " eps is coarser than half the adhesive zone (about "
-               << zone << " eps); expect the contact edges and the friction "
+               << " eps is coarser than half the adhesive zone (about " << zone
+               << " eps); expect the contact edges and the friction "
                << "to be off by several percent";
           notes.push_back(note.str());
         }

@@ -29,6 +29,12 @@ namespace viscoslide
     // Check the file and list the cases (folder and checksum of their
     // parameters) without running or writing anything.
     bool dry_run = false;
+    // Groups of processes that run the cases of a study side by side, each
+    // case on one group (the processes are split evenly).
+    unsigned int jobs = 1;
+    // Run only this case (1-based, in the order of --dry-run) of a study,
+    // for the job arrays of a batch scheduler; 0: every case.
+    unsigned int only_case = 0;
   };
 
   // Runs the parameter file `input` (.prm or .json). Returns the exit code:

@@ -57,6 +57,27 @@ namespace viscoslide
   };
 
 
+  // While it lives, what the program prints on std::cout also goes into
+  // `file` (a run's log.txt), or with `to_screen` = false only there (the
+  // cases of a study run side by side). `append`: a resumed run continues
+  // its log.
+  class ScreenLog
+  {
+  public:
+    ScreenLog(const std::string &file, bool to_screen, bool append);
+    ~ScreenLog();
+    ScreenLog(const ScreenLog &) = delete;
+    ScreenLog &
+    operator=(const ScreenLog &) = delete;
+
+  private:
+    class Tee;
+    std::ofstream        file;
+    std::unique_ptr<Tee> tee;
+    std::streambuf      *screen;
+  };
+
+
   class OutputWriter
   {
   public:

@@ -281,13 +281,14 @@ namespace viscoslide
     take_lock(std::unique_ptr<CaseLock> &lock,
               const std::string         &file,
               MPI_Comm                   comm,
-              std::string               &error)
+              std::string               &error,
+              const double               patience = 0)
     {
       LockState state = LockState::held;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         try
           {
-            lock = std::make_unique<CaseLock>(file);
+            lock = std::make_unique<CaseLock>(file, patience);
             if (!lock->held())
               state = LockState::busy;
           }
@@ -370,7 +371,8 @@ namespace viscoslide
               out << "\n";
             }
         }
-      write_atomically(directory / "steady_state.csv", out.str());
+      if (read_file(directory / "steady_state.csv") != out.str())
+        write_atomically(directory / "steady_state.csv", out.str());
     }
 
     // parameters.prm (with the version), parameters.json and version.txt
@@ -536,7 +538,7 @@ namespace viscoslide
             }
           std::string error;
           const auto  state =
-            take_lock(lock, (dir / ".lock").string(), comm, error);
+            take_lock(lock, (dir / ".lock").string(), comm, error, 5);
           if (state == LockState::busy)
             throw std::runtime_error("another viscoslide is running in '" +
                                      dir.string() + "'; nothing was changed");
@@ -647,7 +649,8 @@ namespace viscoslide
       const fs::path dir  = top / c.name;
       std::unique_ptr<CaseLock> lock;
       std::string               failure;
-      const auto state = take_lock(lock, lock_file(top, c.name), comm, failure);
+      const auto                state =
+        take_lock(lock, lock_file(top, c.name), comm, failure, 2);
       if (state == LockState::busy)
         return CaseOutcome::running_elsewhere;
       if (Utilities::MPI::broadcast(comm,

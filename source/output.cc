@@ -14,6 +14,8 @@
 #include <regex>
 #include <sstream>
 
+#include <unistd.h>
+
 #ifndef VISCOSLIDE_VERSION
 #define VISCOSLIDE_VERSION "unknown"
 #endif
@@ -70,6 +72,7 @@ namespace viscoslide
         throw std::logic_error("a row with the columns " + names +
                                " was added to a table whose columns differ");
       }
+    ++rows;
     if (!file)
       return;
     for (std::size_t i = 0; i < row.size(); ++i)
@@ -85,6 +88,7 @@ namespace viscoslide
                      const std::size_t               keep_rows,
                      MPI_Comm                        comm)
     : columns(columns)
+    , rows(keep_rows)
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -418,7 +422,8 @@ namespace viscoslide
   void
   write_atomically(const std::string &path, const std::string &text)
   {
-    const std::string tmp = path + ".tmp";
+    // A name of its own per process: two runs may write the same file.
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
     {
       std::ofstream out(tmp);
       out << text;

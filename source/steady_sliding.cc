@@ -13,22 +13,37 @@ namespace viscoslide
                SteadyStateTable                &steady_state_table,
                Progress                        *progress,
                ConditionalOStream              &out,
-               MPI_Comm                         comm)
+               MPI_Comm                         comm,
+               const StationCheckpoint         &start,
+               const std::function<void(const StationCheckpoint &)> &checkpoint)
   {
-    CsvTable table(writer.path("continuation.csv"),
-                   {"V_hat",
-                    "delta_hat",
-                    "F_n_hat",
-                    "F_t_hat",
-                    "mu",
-                    "mu_energy",
-                    "L_hat",
-                    "newton_iterations",
-                    "n_dofs"},
-                   version_string() + "; time unit: " +
-                     Parameters::to_string(prm.material.time_constant) +
-                     " time",
-                   comm);
+    const std::vector<std::string> columns = {"V_hat",
+                                              "delta_hat",
+                                              "F_n_hat",
+                                              "F_t_hat",
+                                              "mu",
+                                              "mu_energy",
+                                              "L_hat",
+                                              "newton_iterations",
+                                              "n_dofs"};
+    const std::string              path    = writer.path("continuation.csv");
+    const bool                     resumed = start.next_station > 0;
+    CsvTable                       table =
+      resumed ? CsvTable(path, columns, start.continuation_rows, comm)
+                                    : CsvTable(path,
+                         columns,
+                         version_string() + "; time unit: " +
+                           Parameters::to_string(prm.material.time_constant) +
+                           " time",
+                         comm);
+    if (resumed)
+      {
+        steady_state_table.resume(start.table_rows);
+        if (progress != nullptr)
+          progress->resume_case(
+            double(start.next_station) /
+            (prm.sliding.speeds.size() + prm.sliding.load_path.size()));
+      }
     // The last converged state, so that a failure reports it and not the
     // unconverged one.
     struct
@@ -65,7 +80,7 @@ namespace viscoslide
     const auto        n_total   = speeds.size() + loads.size();
     const std::string load_name = force ? "F_hat " : "delta_hat ";
     std::string       failed;
-    for (unsigned int k = 0; k < n_total; ++k)
+    for (unsigned int k = start.next_station; k < n_total; ++k)
       {
         const bool   is_speed = k < speeds.size();
         const double value    = is_speed ? speeds[k] : loads[k - speeds.size()];
@@ -93,6 +108,8 @@ namespace viscoslide
           solver.write_profile(writer.path("surface_profile_steady.csv"));
         if (prm.output.write_fields)
           solver.write_fields(writer, k);
+        if (checkpoint)
+          checkpoint({k + 1, table.n_rows(), steady_state_table.n_rows()});
         if (progress != nullptr)
           out << "  " << (is_speed ? "V_hat " : load_name) << value << " ("
               << k + 1 << "/" << n_total << ")  ["

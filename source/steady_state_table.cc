@@ -18,6 +18,14 @@ namespace viscoslide
   }
 
 
+  void
+  SteadyStateTable::resume(const std::size_t keep_rows)
+  {
+    if (keep_rows > 0)
+      table = std::make_unique<CsvTable>(filename, columns(), keep_rows, comm);
+  }
+
+
   std::vector<std::string>
   SteadyStateTable::columns()
   {

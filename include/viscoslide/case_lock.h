@@ -13,8 +13,9 @@ namespace viscoslide
   class CaseLock
   {
   public:
-    // Throws if the file cannot be created.
-    explicit CaseLock(const std::string &file);
+    // Tries for `patience` seconds (a killed run's processes may take a
+    // moment to end). Throws if the file cannot be created.
+    explicit CaseLock(const std::string &file, double patience = 0);
     ~CaseLock();
     CaseLock(const CaseLock &) = delete;
     CaseLock &

@@ -207,7 +207,7 @@ namespace viscoslide
     void
     slide(bool resumed = false);
     void
-    slide_steady();
+    slide_steady(bool resumed);
     // Sets slide_plan from the state after the approach.
     void
     plan_slide();

@@ -47,6 +47,13 @@ namespace viscoslide
     void
     add_row(const Row &row);
 
+    // The rows written, those kept by the reopening constructor included.
+    std::size_t
+    n_rows() const
+    {
+      return rows;
+    }
+
     // Numbers are written with 12 significant digits.
     static std::string
     format(double value);
@@ -54,6 +61,7 @@ namespace viscoslide
   private:
     std::unique_ptr<std::ofstream> file;
     std::vector<std::string>       columns;
+    std::size_t                    rows = 0;
   };
 
 

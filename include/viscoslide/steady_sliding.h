@@ -71,16 +71,32 @@ namespace viscoslide
   // the last converged state, whose V_hat, delta and F_n it shows), the
   // continuation goes on to the next one, and at the end std::runtime_error
   // names the stations missed.
+  // Where a continuation resumes: the station after the last converged
+  // one, and the rows its tables keep.
+  struct StationCheckpoint
+  {
+    unsigned int next_station      = 0;
+    std::size_t  continuation_rows = 0;
+    std::size_t  table_rows        = 0;
+  };
+
+  // Runs the stations of Sliding speed (then Load path) from
+  // start.next_station on, with a row per station in `table` and one per
+  // converged step in continuation.csv; `checkpoint`, if given, is called
+  // after each converged station.
   void
-  run_stations(SteadySliding                   &solver,
-               Parameters::SlidingSolver        kind,
-               const Parameters::AllParameters &prm,
-               const Scales                    &scales,
-               OutputWriter                    &writer,
-               SteadyStateTable                &table,
-               Progress                        *progress,
-               ConditionalOStream              &out,
-               MPI_Comm                         comm);
+  run_stations(
+    SteadySliding                                        &solver,
+    Parameters::SlidingSolver                             kind,
+    const Parameters::AllParameters                      &prm,
+    const Scales                                         &scales,
+    OutputWriter                                         &writer,
+    SteadyStateTable                                     &table,
+    Progress                                             *progress,
+    ConditionalOStream                                   &out,
+    MPI_Comm                                              comm,
+    const StationCheckpoint                              &start      = {},
+    const std::function<void(const StationCheckpoint &)> &checkpoint = {});
 } // namespace viscoslide
 
 #endif

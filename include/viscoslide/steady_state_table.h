@@ -49,6 +49,16 @@ namespace viscoslide
             Parameters::SlidingSolver solver,
             ConditionalOStream       &out);
 
+    // Continues the file of a resumed run after its first `keep_rows` rows.
+    void
+    resume(std::size_t keep_rows);
+
+    std::size_t
+    n_rows() const
+    {
+      return table ? table->n_rows() : 0;
+    }
+
   private:
     const Parameters::AllParameters &prm;
     const Scales                    &scales;

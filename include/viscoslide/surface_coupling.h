@@ -85,6 +85,13 @@ namespace viscoslide
     {
       return target_force;
     }
+    // The approach at which the spring of Sliding/Control = spring is
+    // relaxed (kept by checkpoints).
+    double
+    spring_reference() const
+    {
+      return spring_delta;
+    }
     // The spring of Sliding/Control = spring; 0 for the other controls.
     static double
     spring_stiffness_of(const Parameters::AllParameters &prm,

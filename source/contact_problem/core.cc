@@ -295,7 +295,12 @@ namespace viscoslide
   void
   ContactProblem::run(const bool resume)
   {
-    if (resume)
+    const bool steady =
+      prm.sliding.speed > 0 &&
+      prm.sliding.solver == Parameters::SlidingSolver::steady_state;
+    if (resume && steady)
+      ; // the steady-state solver reads its own checkpoint
+    else if (resume)
       {
         read_checkpoint();
         open_approach_table(true);
@@ -323,23 +328,20 @@ namespace viscoslide
           hold();
       }
 
-    if (prm.sliding.speed > 0 &&
-        prm.sliding.solver == Parameters::SlidingSolver::steady_state)
+    if (steady)
+      slide_steady(resume);
+    else
       {
-        slide_steady();
-        timer.print_wall_time_statistics(mpi_communicator);
-        return;
+        if (prm.sliding.speed > 0)
+          slide(resume);
+        if (prm.loading.retract)
+          ramp(Phase::retract, prm.loading.retract_to);
+        write_profile("surface_profile_final.csv");
+        if (prm.output.write_fields &&
+            (prm.output.fields_every == 0 ||
+             (step_number - 1) % prm.output.fields_every != 0))
+          write_fields();
       }
-    if (prm.sliding.speed > 0)
-      slide(resume);
-    if (prm.loading.retract)
-      ramp(Phase::retract, prm.loading.retract_to);
-
-    write_profile("surface_profile_final.csv");
-    if (prm.output.write_fields &&
-        (prm.output.fields_every == 0 ||
-         (step_number - 1) % prm.output.fields_every != 0))
-      write_fields();
     // A finished run needs its checkpoint no more.
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::filesystem::remove_all(writer.path("checkpoint"));

@@ -201,22 +201,35 @@ namespace viscoslide
 
 
   // The steady state solved directly in the indenter's frame, starting
-  // from the relaxed state of the approach (steady_state/solver.h). The
+  // from the relaxed state of the approach (steady_state/solver.h), or
+  // with `resumed` from the checkpoint of its last converged station. The
   // triangulation then belongs to the steady-state solver: nothing of the
   // transient solution is used afterwards.
   void
-  ContactProblem::slide_steady()
+  ContactProblem::slide_steady(const bool resumed)
   {
     SteadyStateSolver steady(
       prm, scales, material, coupling, postprocessor, triangulation, timer);
-    steady.initialize(dof_handler, solution, committed.delta, committed.s);
-    if (prm.sliding.control != Parameters::Control::displacement)
-      coupling.hold_force(last_quantities.normal_force,
-                          SurfaceCoupling::spring_stiffness_of(prm, scales),
-                          committed.delta);
+    StationCheckpoint start;
+    if (resumed)
+      start = steady.read_checkpoint(writer.path(""));
+    else
+      {
+        steady.initialize(dof_handler, solution, committed.delta, committed.s);
+        if (prm.sliding.control != Parameters::Control::displacement)
+          coupling.hold_force(last_quantities.normal_force,
+                              SurfaceCoupling::spring_stiffness_of(prm, scales),
+                              committed.delta);
+      }
     pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
           << Parameters::to_string(prm.sliding.control)
-          << " control, by continuation from the relaxed state" << std::endl;
+          << " control, by continuation from the "
+          << (resumed ? "checkpoint" : "relaxed state") << std::endl;
+    std::function<void(const StationCheckpoint &)> checkpoint;
+    if (prm.output.checkpoint_every > 0)
+      checkpoint = [&](const StationCheckpoint &station) {
+        steady.write_checkpoint(writer.path(""), station);
+      };
     run_stations(steady,
                  Parameters::SlidingSolver::steady_state,
                  prm,
@@ -225,6 +238,8 @@ namespace viscoslide
                  steady_state_table,
                  progress,
                  pcout,
-                 mpi_communicator);
+                 mpi_communicator,
+                 start,
+                 checkpoint);
   }
 } // namespace viscoslide

@@ -132,6 +132,16 @@ namespace viscoslide
     }
 
     // [output.cc]
+    // A checkpoint after a converged station, in `directory` (replaced
+    // only once the new one is complete), and the state it restores in
+    // place of initialize(): the mesh and the solution through p4est, and
+    // the continuation's scalars (doc/restart.md).
+    void
+    write_checkpoint(const std::string       &directory,
+                     const StationCheckpoint &station) const;
+    StationCheckpoint
+    read_checkpoint(const std::string &directory);
+
     void
     write_profile(const std::string &path) const override;
     // Displacement, viscous strain, stress and D over the block, and the

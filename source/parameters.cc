@@ -263,8 +263,10 @@ namespace viscoslide
         "Transient sliding: write a checkpoint (mesh, solution, history, "
         "sliding position and steady-state window) into OUTPUT/checkpoint "
         "every this many sliding steps, so that `viscoslide --resume` "
-        "continues a killed run from there (doc/restart.md). The previous "
-        "checkpoint is replaced only once the new one is complete. 0: none.");
+        "continues a killed run from there (doc/restart.md). The "
+        "steady-state solver writes one after every converged speed or load "
+        "whatever the value above 0. The previous checkpoint is replaced "
+        "only once the new one is complete. 0: none.");
       prm.leave_subsection();
     }
 

@@ -6,6 +6,7 @@
 #include <viscoslide/driver.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
+#include <viscoslide/run_record.h>
 #include <viscoslide/steady_state_table.h>
 
 #include <algorithm>
@@ -354,10 +355,8 @@ namespace viscoslide
                 {{"control", Parameters::to_string(p.sliding.control)},
                  {"mu_T", CsvTable::format(p.adhesion.tabor_parameter)},
                  {"R_hat", CsvTable::format(p.adhesion.R_over_eps)},
-                 {"t_hat",
-                  p.geometry.substrate == Parameters::Substrate::layer
-                    ? CsvTable::format(p.geometry.layer_thickness)
-                    : std::string("half-plane")},
+                 {"substrate", Parameters::to_string(p.geometry.substrate)},
+                 {"t_hat", CsvTable::format(SteadyStateTable::t_hat(p))},
                  {"steady", "0"},
                  {"time_constant",
                   Parameters::to_string(p.material.time_constant)},
@@ -407,14 +406,15 @@ namespace viscoslide
         throw std::runtime_error(error);
     }
 
-    // Runs one case; returns "" or the reason it failed. Failures of the
-    // solver are collective, so every process returns the same.
+    // The solver of one case, its screen output copied into log.txt;
+    // returns "" or the reason it failed. Failures of the solver are
+    // collective, so every process returns the same.
     std::string
-    run_case(const Case &c,
-             Progress   &progress,
-             MPI_Comm    comm,
-             const bool  resume,
-             const bool  to_screen = true)
+    run_solver(const Case &c,
+               Progress   &progress,
+               MPI_Comm    comm,
+               const bool  resume,
+               const bool  to_screen)
     {
       std::unique_ptr<ScreenLog> log;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -450,6 +450,23 @@ namespace viscoslide
           const std::string what = e.what();
           return what.empty() ? "unknown error" : what;
         }
+    }
+
+    // Runs one case with its record (run.json).
+    std::string
+    run_case(const Case       &c,
+             Progress         &progress,
+             MPI_Comm          comm,
+             const bool        resume,
+             const RunOptions &options)
+    {
+      RunRecord         record(c.parameters.output.directory,
+                       options.command_line,
+                       comm);
+      const std::string failure =
+        run_solver(c, progress, comm, resume, options.jobs == 1);
+      record.finish(failure.empty() ? "done" : "failed");
+      return failure;
     }
   } // namespace
 
@@ -558,7 +575,7 @@ namespace viscoslide
                   << Utilities::MPI::n_mpi_processes(comm)
                   << " MPI process(es)\n";
       Progress          progress(1, 1);
-      const std::string failure = run_case(c, progress, comm, resume);
+      const std::string failure = run_case(c, progress, comm, resume, options);
       if (root)
         try
           {
@@ -689,7 +706,7 @@ namespace viscoslide
           std::cout << std::endl;
         }
       if (failure.empty())
-        failure = run_case(c, progress, comm, resume, options.jobs == 1);
+        failure = run_case(c, progress, comm, resume, options);
       if (!root)
         return CaseOutcome::ran;
       try

@@ -56,7 +56,13 @@ main(int argc, char *argv[])
 
   std::vector<std::string> args(argv + 1, argv + argc);
   RunOptions               options;
-  std::string              input;
+  for (int i = 0; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      const bool quote    = a.empty() || a.find_first_of(" \t'\"") != a.npos;
+      options.command_line += (i ? " " : "") + (quote ? "'" + a + "'" : a);
+    }
+  std::string input;
   for (std::size_t i = 0; i < args.size(); ++i)
     {
       if (args[i] == "--help" || args[i] == "-h")

@@ -1392,6 +1392,14 @@ namespace viscoslide
                << "to be off by several percent";
           notes.push_back(note.str());
         }
+      if (sliding.solver == SlidingSolver::transient && sliding.speed > 0)
+        notes.push_back(
+          "Note: 'Sliding/Solver' = transient slides the indenter until the "
+          "contact is steady, typically thousands of eps in steps of the "
+          "finest cell: minutes per speed at R_hat 400, 20 minutes to hours "
+          "at R_hat 1e4 (doc/benchmark.md). For the steady friction alone, "
+          "'Sliding/Solver' = steady-state solves it directly (about a "
+          "minute for a curve of 21 speeds at muT 1, 2-eps cells)");
       if (!loading.has_target_load() || mesh.uniform_surface)
         return;
       const double width =

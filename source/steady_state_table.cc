@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace viscoslide
@@ -26,12 +27,22 @@ namespace viscoslide
   }
 
 
+  double
+  SteadyStateTable::t_hat(const Parameters::AllParameters &prm)
+  {
+    return prm.geometry.substrate == Parameters::Substrate::layer
+             ? prm.geometry.layer_thickness
+             : std::numeric_limits<double>::infinity();
+  }
+
+
   std::vector<std::string>
   SteadyStateTable::columns()
   {
     return {"control",
             "mu_T",
             "R_hat",
+            "substrate",
             "t_hat",
             "V_hat",
             "delta_hat",
@@ -73,10 +84,8 @@ namespace viscoslide
       {{"control", Parameters::to_string(prm.sliding.control)},
        {"mu_T", F::format(prm.adhesion.tabor_parameter)},
        {"R_hat", F::format(prm.adhesion.R_over_eps)},
-       {"t_hat",
-        prm.geometry.substrate == Parameters::Substrate::layer
-          ? F::format(prm.geometry.layer_thickness)
-          : std::string("half-plane")},
+       {"substrate", Parameters::to_string(prm.geometry.substrate)},
+       {"t_hat", F::format(t_hat(prm))},
        {"V_hat", F::format(V_hat)},
        {"delta_hat", F::format(delta / scales.eps)},
        {"F_n_hat", F::format(Fn / scales.force)},

@@ -35,6 +35,8 @@ namespace viscoslide
     // Run only this case (1-based, in the order of --dry-run) of a study,
     // for the job arrays of a batch scheduler; 0: every case.
     unsigned int only_case = 0;
+    // As typed, for the record of each run (run.json).
+    std::string command_line;
   };
 
   // Runs the parameter file `input` (.prm or .json). Returns the exit code:

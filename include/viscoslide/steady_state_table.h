@@ -34,6 +34,11 @@ namespace viscoslide
     static std::vector<std::string>
     columns();
 
+    // The layer thickness in eps, infinite for a half-plane, so that the
+    // column stays numeric.
+    static double
+    t_hat(const Parameters::AllParameters &prm);
+
     // A state at speed V_hat and approach delta (internal units) with the
     // surface quantities and the total dissipation rate. `steady` = false:
     // the state is the last converged one of a station that was not

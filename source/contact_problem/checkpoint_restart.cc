@@ -6,11 +6,10 @@
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <viscoslide/checkpoint.h>
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/mesh.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace viscoslide
@@ -28,25 +27,13 @@ namespace viscoslide
   // attached (the same SolutionTransfer that carries them through
   // refinement serializes them with p4est), and every scalar of
   // serialize() in a binary archive, so that a resumed run continues bit
-  // for bit. It is written into checkpoint.tmp/, which then replaces
-  // checkpoint/, so that a kill at any moment leaves one complete
-  // checkpoint.
+  // for bit.
   void
   ContactProblem::write_checkpoint()
   {
     TimerOutput::Scope t(timer, "checkpoint");
-    namespace fs       = std::filesystem;
-    const fs::path dir = writer.path("checkpoint"),
-                   tmp = writer.path("checkpoint.tmp"),
-                   old = writer.path("checkpoint.old");
-    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    if (root)
-      {
-        fs::remove_all(tmp);
-        fs::create_directories(tmp);
-      }
-    MPI_Barrier(mpi_communicator);
-
+    const std::string  tmp =
+      Checkpoint::begin(writer.path(""), mpi_communicator);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       solution_transfer(dof_handler), history_transfer(history_dof_handler);
     solution_transfer.prepare_for_serialization(
@@ -57,22 +44,14 @@ namespace viscoslide
     for (const auto &h : ghosted)
       in.push_back(&h);
     history_transfer.prepare_for_serialization(in);
-    triangulation.save((tmp / "mesh").string());
+    triangulation.save(tmp + "/mesh");
 
-    if (root)
-      {
-        std::ostringstream out;
-        {
-          boost::archive::binary_oarchive archive(out);
-          archive << checkpoint_version << *this;
-        }
-        write_atomically((tmp / "state.bin").string(), out.str());
-        if (fs::exists(dir))
-          fs::rename(dir, old);
-        fs::rename(tmp, dir);
-        fs::remove_all(old);
-      }
-    MPI_Barrier(mpi_communicator);
+    std::ostringstream out;
+    {
+      boost::archive::binary_oarchive archive(out);
+      archive << checkpoint_version << *this;
+    }
+    Checkpoint::commit(writer.path(""), out.str(), mpi_communicator);
     pcout << "Checkpoint after " << history_rows << " rows of history.csv"
           << std::endl;
   }
@@ -81,48 +60,39 @@ namespace viscoslide
   bool
   ContactProblem::has_checkpoint(const std::string &directory)
   {
-    namespace fs = std::filesystem;
-    return fs::exists(fs::path(directory) / "checkpoint" / "state.bin");
+    return Checkpoint::exists(directory);
   }
 
 
   // The inverse of write_checkpoint(), in place of setup, approach and the
-  // start of the sliding phase. A checkpoint left as checkpoint.old by a
-  // kill between the two renames is taken back first.
+  // start of the sliding phase.
   void
   ContactProblem::read_checkpoint()
   {
-    namespace fs       = std::filesystem;
-    const fs::path dir = writer.path("checkpoint");
-    const fs::path old = writer.path("checkpoint.old");
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
-        !fs::exists(dir) && fs::exists(old))
-      fs::rename(old, dir);
-    MPI_Barrier(mpi_communicator);
-    std::ifstream in(dir / "state.bin", std::ios::binary);
-    if (!in)
-      throw Parameters::ExcInvalidInput("no checkpoint to resume from in '" +
-                                        dir.string() + "'");
+    std::string       state;
+    const std::string dir =
+      Checkpoint::open(writer.path(""), state, mpi_communicator);
     try
       {
+        std::istringstream              in(state);
         boost::archive::binary_iarchive archive(in);
         unsigned int                    version = 0;
         archive >> version;
         if (version != checkpoint_version)
           throw Parameters::ExcInvalidInput(
-            "checkpoint '" + dir.string() +
+            "checkpoint '" + dir +
             "' was written by another version of viscoslide");
         archive >> *this;
       }
     catch (const boost::archive::archive_exception &)
       {
-        throw Parameters::ExcInvalidInput("checkpoint '" + dir.string() +
+        throw Parameters::ExcInvalidInput("checkpoint '" + dir +
                                           "/state.bin' is damaged");
       }
     current = committed;
 
     make_block(triangulation, prm);
-    triangulation.load((dir / "mesh").string());
+    triangulation.load(dir + "/mesh");
     setup_system();
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       solution_transfer(dof_handler), history_transfer(history_dof_handler);

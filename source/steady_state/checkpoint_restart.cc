@@ -5,11 +5,10 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 
+#include <viscoslide/checkpoint.h>
 #include <viscoslide/mesh.h>
 #include <viscoslide/steady_state/solver.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace viscoslide
@@ -22,82 +21,54 @@ namespace viscoslide
   } // namespace
 
 
-  // As the transient's: written into checkpoint.tmp/, which then replaces
-  // checkpoint/, so that a kill at any moment leaves one complete
-  // checkpoint.
   void
   SteadyStateSolver::write_checkpoint(const std::string       &directory,
                                       const StationCheckpoint &station) const
   {
     TimerOutput::Scope t(timer, "steady: checkpoint");
-    namespace fs       = std::filesystem;
-    const fs::path top = directory;
-    const fs::path dir = top / "checkpoint", tmp = top / "checkpoint.tmp",
-                   old = top / "checkpoint.old";
-    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    if (root)
-      {
-        fs::remove_all(tmp);
-        fs::create_directories(tmp);
-      }
-    MPI_Barrier(mpi_communicator);
-
+    const std::string  tmp = Checkpoint::begin(directory, mpi_communicator);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       transfer(dof_handler);
     transfer.prepare_for_serialization(solution);
-    triangulation.save((tmp / "mesh").string());
-    if (root)
-      {
-        std::ostringstream out;
-        {
-          boost::archive::binary_oarchive archive(out);
-          const double                    force = coupling.held_force(),
-                       spring                   = coupling.spring_reference();
-          archive << steady_checkpoint_version << station.next_station
-                  << station.continuation_rows << station.table_rows << V_hat
-                  << delta << s << force << spring;
-        }
-        write_atomically((tmp / "state.bin").string(), out.str());
-        if (fs::exists(dir))
-          fs::rename(dir, old);
-        fs::rename(tmp, dir);
-        fs::remove_all(old);
-      }
-    MPI_Barrier(mpi_communicator);
+    triangulation.save(tmp + "/mesh");
+
+    std::ostringstream out;
+    {
+      boost::archive::binary_oarchive archive(out);
+      const double                    force = coupling.held_force(),
+                   spring                   = coupling.spring_reference();
+      archive << steady_checkpoint_version << station.next_station
+              << station.continuation_rows << station.table_rows << V_hat
+              << delta << s << force << spring;
+    }
+    Checkpoint::commit(directory, out.str(), mpi_communicator);
   }
 
 
   StationCheckpoint
   SteadyStateSolver::read_checkpoint(const std::string &directory)
   {
-    namespace fs       = std::filesystem;
-    const fs::path dir = fs::path(directory) / "checkpoint",
-                   old = fs::path(directory) / "checkpoint.old";
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
-        !fs::exists(dir) && fs::exists(old))
-      fs::rename(old, dir);
-    MPI_Barrier(mpi_communicator);
-    std::ifstream in(dir / "state.bin", std::ios::binary);
-    if (!in)
-      throw Parameters::ExcInvalidInput("no checkpoint to resume from in '" +
-                                        dir.string() + "'");
+    std::string       state;
+    const std::string dir =
+      Checkpoint::open(directory, state, mpi_communicator);
     StationCheckpoint station;
     double            force = 0., spring = 0.;
     try
       {
+        std::istringstream              in(state);
         boost::archive::binary_iarchive archive(in);
         unsigned int                    version = 0;
         archive >> version;
         if (version != steady_checkpoint_version)
           throw Parameters::ExcInvalidInput(
-            "checkpoint '" + dir.string() +
+            "checkpoint '" + dir +
             "' was not written by this version's steady-state solver");
         archive >> station.next_station >> station.continuation_rows >>
           station.table_rows >> V_hat >> delta >> s >> force >> spring;
       }
     catch (const boost::archive::archive_exception &)
       {
-        throw Parameters::ExcInvalidInput("checkpoint '" + dir.string() +
+        throw Parameters::ExcInvalidInput("checkpoint '" + dir +
                                           "/state.bin' is damaged");
       }
     if (prm.sliding.control != Parameters::Control::displacement)
@@ -107,7 +78,7 @@ namespace viscoslide
 
     triangulation.clear();
     make_block(triangulation, prm);
-    triangulation.load((dir / "mesh").string());
+    triangulation.load(dir + "/mesh");
     setup_system();
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
                                   transfer(dof_handler);

@@ -1,0 +1,41 @@
+// The folder OUTPUT/checkpoint of a run, written as a whole: the solvers
+// fill a temporary folder (the mesh with its vectors through p4est, and
+// their scalars as state.bin), which then replaces the previous
+// checkpoint, so that a kill at any moment leaves one complete checkpoint
+// (doc/restart.md).
+#ifndef viscoslide_checkpoint_h
+#define viscoslide_checkpoint_h
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+
+namespace viscoslide
+{
+  namespace Checkpoint
+  {
+    // Whether the run in `directory` has a checkpoint to resume from.
+    bool
+    exists(const std::string &directory);
+
+    // Creates the empty temporary folder and returns its path, on every
+    // process; the mesh goes there.
+    std::string
+    begin(const std::string &directory, MPI_Comm comm);
+
+    // Writes `state` (a binary archive) as state.bin into the temporary
+    // folder and puts the folder in place of the previous checkpoint.
+    void
+    commit(const std::string &directory,
+           const std::string &state,
+           MPI_Comm           comm);
+
+    // The checkpoint folder to read (taking back a checkpoint left as
+    // checkpoint.old by a kill between the two renames) and in `state` the
+    // contents of its state.bin; throws if there is none.
+    std::string
+    open(const std::string &directory, std::string &state, MPI_Comm comm);
+  } // namespace Checkpoint
+} // namespace viscoslide
+
+#endif

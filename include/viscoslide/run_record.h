@@ -1,0 +1,41 @@
+// run.json: what a run was (command line, host, processes, times, the
+// version and the state of the source tree read when it ran, the mesh),
+// beside the run's parameters.prm and log.txt (doc/outputs.md).
+#ifndef viscoslide_run_record_h
+#define viscoslide_run_record_h
+
+#include <deal.II/base/mpi.h>
+
+#include <chrono>
+#include <string>
+
+namespace viscoslide
+{
+  class RunRecord
+  {
+  public:
+    // Writes run.json into `directory` with the status "running" (on the
+    // first process of `comm`; the others do nothing).
+    RunRecord(const std::string &directory,
+              const std::string &command_line,
+              MPI_Comm           comm);
+
+    // Rewrites it with the end time, the wall time, the status ("done" or
+    // "failed") and the size of the last mesh read from the run's tables.
+    void
+    finish(const std::string &status);
+
+  private:
+    void
+    write(const std::string &status, const std::string &end) const;
+
+    std::string                           directory, command_line, start;
+    unsigned int                          n_processes;
+    bool                                  root;
+    std::chrono::steady_clock::time_point clock_start;
+    double                                wall_seconds = 0.;
+    std::string                           mesh; // a JSON object
+  };
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,75 @@
+#include <viscoslide/checkpoint.h>
+#include <viscoslide/output.h>
+#include <viscoslide/parameters.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace viscoslide
+{
+  namespace Checkpoint
+  {
+    namespace fs = std::filesystem;
+
+    bool
+    exists(const std::string &directory)
+    {
+      return fs::exists(fs::path(directory) / "checkpoint" / "state.bin");
+    }
+
+
+    std::string
+    begin(const std::string &directory, MPI_Comm comm)
+    {
+      const fs::path tmp = fs::path(directory) / "checkpoint.tmp";
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          fs::remove_all(tmp);
+          fs::create_directories(tmp);
+        }
+      MPI_Barrier(comm);
+      return tmp.string();
+    }
+
+
+    void
+    commit(const std::string &directory,
+           const std::string &state,
+           MPI_Comm           comm)
+    {
+      const fs::path top = directory;
+      const fs::path dir = top / "checkpoint", tmp = top / "checkpoint.tmp",
+                     old = top / "checkpoint.old";
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          write_atomically((tmp / "state.bin").string(), state);
+          if (fs::exists(dir))
+            fs::rename(dir, old);
+          fs::rename(tmp, dir);
+          fs::remove_all(old);
+        }
+      MPI_Barrier(comm);
+    }
+
+
+    std::string
+    open(const std::string &directory, std::string &state, MPI_Comm comm)
+    {
+      const fs::path dir = fs::path(directory) / "checkpoint",
+                     old = fs::path(directory) / "checkpoint.old";
+      if (Utilities::MPI::this_mpi_process(comm) == 0 && !fs::exists(dir) &&
+          fs::exists(old))
+        fs::rename(old, dir);
+      MPI_Barrier(comm);
+      std::ifstream in(dir / "state.bin", std::ios::binary);
+      if (!in)
+        throw Parameters::ExcInvalidInput("no checkpoint to resume from in '" +
+                                          dir.string() + "'");
+      std::ostringstream contents;
+      contents << in.rdbuf();
+      state = contents.str();
+      return dir.string();
+    }
+  } // namespace Checkpoint
+} // namespace viscoslide

@@ -76,7 +76,7 @@ namespace viscoslide
       const bool modified =
         !first_line_of(git + "status --porcelain --untracked-files=no").empty();
       return "\"revision_now\": " + json_string(revision) +
-             ", \"tree_modified\": " + (modified ? "true" : "false");
+             ",\n  \"tree_modified\": " + (modified ? "true" : "false");
     }
 
     // The last value of `column` in a CSV table of the run, "" if none.

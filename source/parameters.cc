@@ -1236,50 +1236,6 @@ namespace viscoslide
     }
 
 
-    // Measured on Fig. 3 (muT 6.08, R_hat 1e4, F_hat 1) at V_hat 1000,
-    // against the boundary elements: a block of 2 x 0.4 wake lengths gives
-    // a friction 10 % low, 8 x 2 wake lengths 2 % low, 20 x 5 wake lengths
-    // (the default) 0.5 % low (doc/model.md, Block and wake).
-    void
-    AllParameters::fit_block_to_wake()
-    {
-      // A uniform surface would grow with the block.
-      if (sliding.solver == SlidingSolver::transient ||
-          geometry.wake_lengths == 0 || sliding.speeds.empty() ||
-          mesh.uniform_surface)
-        return;
-      const double V =
-        *std::max_element(sliding.speeds.begin(), sliding.speeds.end());
-      const double wake  = V * longest_creep_time();
-      const double width = geometry.wake_lengths * wake, depth = width / 4;
-      const bool   layer = geometry.substrate == Substrate::layer;
-      const bool   force = sliding.control == Control::force;
-      const bool   fem   = sliding.solver == SlidingSolver::steady_state;
-      const double W0 = geometry.domain_width, H0 = geometry.height();
-      if (fem && (force || layer))
-        geometry.domain_width = std::max(W0, width);
-      if (force && !layer)
-        geometry.domain_height = std::max(H0, depth);
-
-      std::ostringstream note;
-      if (geometry.domain_width != W0 || geometry.height() != H0)
-        note << "the wake, V tau_c = " << wake << " eps at V_hat " << V
-             << ", needs a larger block: " << W0 << " x " << H0
-             << " eps widened to " << geometry.domain_width << " x "
-             << geometry.height()
-             << " ('Geometry/Wake lengths' = " << geometry.wake_lengths << ")";
-      else if (fem && (W0 < width || (!layer && H0 < depth)))
-        note << "Warning: the wake, V tau_c = " << wake << " eps at V_hat " << V
-             << ", does not fit the block of " << W0 << " x " << H0
-             << " eps ('Geometry/Wake lengths' = " << geometry.wake_lengths
-             << " asks for " << width << " x " << depth
-             << "); with this control the block stays as given, and the "
-                "friction at the fastest speeds will be low";
-      else
-        return;
-      notes.push_back(note.str());
-    }
-
     namespace
     {
       // The finest cell p4est can make from the coarse cells is 2^-30 of
@@ -1310,6 +1266,60 @@ namespace viscoslide
                          (M_PI * E_star));
       }
     } // namespace
+
+
+    // Measured on Fig. 3 (muT 6.08, R_hat 1e4, F_hat 1) at V_hat 1000,
+    // against the boundary elements: a block of 2 x 0.4 wake lengths gives
+    // a friction 10 % low, 8 x 2 wake lengths 2 % low, 20 x 5 wake lengths
+    // (the default) 0.5 % low (doc/model.md, Block and wake).
+    void
+    AllParameters::fit_block_to_wake()
+    {
+      // A uniform surface would grow with the block.
+      if (sliding.solver == SlidingSolver::transient ||
+          geometry.wake_lengths == 0 || sliding.speeds.empty() ||
+          mesh.uniform_surface)
+        return;
+      const double V =
+        *std::max_element(sliding.speeds.begin(), sliding.speeds.end());
+      const double wake  = V * longest_creep_time();
+      const double width = geometry.wake_lengths * wake, depth = width / 4;
+      const bool   layer = geometry.substrate == Substrate::layer;
+      const bool   force = sliding.control == Control::force;
+      const bool   fem   = sliding.solver == SlidingSolver::steady_state;
+      const double W0 = geometry.domain_width, H0 = geometry.height();
+      // A thin layer keeps to the aspect ratio the mesh can tile.
+      if (fem && (force || layer))
+        geometry.domain_width =
+          std::max(W0, std::min(width, max_aspect_ratio * H0));
+      if (force && !layer)
+        geometry.domain_height = std::max(H0, depth);
+
+      std::ostringstream note;
+      if (geometry.domain_width != W0 || geometry.height() != H0)
+        note << "the wake, V tau_c = " << wake << " eps at V_hat " << V
+             << ", needs a larger block: " << W0 << " x " << H0
+             << " eps widened to " << geometry.domain_width << " x "
+             << geometry.height()
+             << " ('Geometry/Wake lengths' = " << geometry.wake_lengths << ")"
+             << (fem && geometry.domain_width < width
+                   ? "; not to the " + num(width) +
+                       " eps asked, the mesh tiles at most 1e4 layer "
+                       "thicknesses: the friction at the fastest speeds may be "
+                       "low"
+                   : "");
+      else if (fem && (W0 < width || (!layer && H0 < depth)))
+        note << "Warning: the wake, V tau_c = " << wake << " eps at V_hat " << V
+             << ", does not fit the block of " << W0 << " x " << H0
+             << " eps ('Geometry/Wake lengths' = " << geometry.wake_lengths
+             << " asks for " << width << " x " << depth
+             << "); with this control the block stays as given, and the "
+                "friction at the fastest speeds will be low";
+      else
+        return;
+      notes.push_back(note.str());
+    }
+
 
 
     // Refuses, before a mesh is built, what the refinement cannot represent

@@ -738,7 +738,7 @@ namespace viscoslide
     {
       const unsigned int n_procs = Utilities::MPI::n_mpi_processes(comm);
       const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-      const unsigned int jobs    = std::min(options.jobs, n_procs);
+      const unsigned int jobs    = options.jobs;
       MPI_Comm           group;
       MPI_Comm_split(comm, rank * jobs / n_procs, rank, &group);
       const bool group_root = Utilities::MPI::this_mpi_process(group) == 0;
@@ -853,9 +853,13 @@ namespace viscoslide
 
   int
   run_parameter_file(const std::string &input,
-                     const RunOptions  &options,
+                     const RunOptions  &requested,
                      MPI_Comm           comm)
   {
+    // No more groups than processes.
+    RunOptions options = requested;
+    options.jobs =
+      std::min(options.jobs, Utilities::MPI::n_mpi_processes(comm));
     std::vector<Case> cases;
     fs::path          top; // the Output directory
     if (!read_cases(input, cases, top, comm))

@@ -298,14 +298,13 @@ namespace viscoslide
     const bool steady =
       prm.sliding.speed > 0 &&
       prm.sliding.solver == Parameters::SlidingSolver::steady_state;
-    if (resume && steady)
-      ; // the steady-state solver reads its own checkpoint
-    else if (resume)
+    // A resumed steady-state run reads its checkpoint in slide_steady().
+    if (resume && !steady)
       {
         read_checkpoint();
         open_approach_table(true);
       }
-    else
+    else if (!resume)
       {
         open_approach_table(false);
         make_block(triangulation, prm);

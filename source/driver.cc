@@ -302,32 +302,6 @@ namespace viscoslide
       return Utilities::MPI::broadcast(comm, state, 0);
     }
 
-    // The rows of a case's steady_state.csv as column -> value maps.
-    std::vector<std::map<std::string, std::string>>
-    read_rows(const fs::path &csv)
-    {
-      std::vector<std::map<std::string, std::string>> rows;
-      std::ifstream                                   in(csv);
-      std::string                                     line;
-      std::vector<std::string>                        header;
-      while (std::getline(in, line))
-        {
-          if (line.empty() || line[0] == '#')
-            continue;
-          const auto values = Utilities::split_string_list(line, ',');
-          if (header.empty())
-            {
-              header = values;
-              continue;
-            }
-          std::map<std::string, std::string> row;
-          for (std::size_t i = 0; i < header.size() && i < values.size(); ++i)
-            row[header[i]] = values[i];
-          rows.push_back(row);
-        }
-      return rows;
-    }
-
     // The sweep's steady_state.csv, rebuilt from the case folders after
     // each case: a row per case and speed, or one row naming the reason
     // for a case that failed before writing any.
@@ -346,7 +320,7 @@ namespace viscoslide
           const Status status = read_status(directory / c.name);
           if (status.state.empty())
             continue;
-          auto rows = read_rows(directory / c.name / "steady_state.csv");
+          auto rows = CsvTable::read(directory / c.name / "steady_state.csv");
           if (rows.empty())
             {
               // What is known of the case without a result.

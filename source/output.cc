@@ -83,6 +83,32 @@ namespace viscoslide
                                "full?)");
   }
 
+  std::vector<std::map<std::string, std::string>>
+  CsvTable::read(const std::string &filename)
+  {
+    std::vector<std::map<std::string, std::string>> rows;
+    std::ifstream                                   in(filename);
+    std::string                                     line;
+    std::vector<std::string>                        header;
+    while (std::getline(in, line))
+      {
+        if (line.empty() || line[0] == '#')
+          continue;
+        const auto values = Utilities::split_string_list(line, ',');
+        if (header.empty())
+          {
+            header = values;
+            continue;
+          }
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < header.size() && i < values.size(); ++i)
+          row[header[i]] = values[i];
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+
   CsvTable::CsvTable(const std::string              &filename,
                      const std::vector<std::string> &columns,
                      const std::size_t               keep_rows,

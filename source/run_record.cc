@@ -79,33 +79,14 @@ namespace viscoslide
              ",\n  \"tree_modified\": " + (modified ? "true" : "false");
     }
 
-    // The last value of `column` in a CSV table of the run, "" if none.
+    // The last value of `column` in a table of the run, "null" if none.
     std::string
     last_value(const std::filesystem::path &csv, const std::string &column)
     {
-      std::ifstream in(csv);
-      std::string   line, value;
-      int           index = -1;
-      while (std::getline(in, line))
-        {
-          if (line.empty() || line[0] == '#')
-            continue;
-          std::vector<std::string> cells;
-          std::stringstream        s(line);
-          for (std::string cell; std::getline(s, cell, ',');)
-            cells.push_back(cell);
-          if (index < 0)
-            {
-              for (std::size_t i = 0; i < cells.size(); ++i)
-                if (cells[i] == column)
-                  index = i;
-              if (index < 0)
-                return "";
-            }
-          else if (index < static_cast<int>(cells.size()))
-            value = cells[index];
-        }
-      return value;
+      const auto rows = CsvTable::read(csv.string());
+      if (rows.empty() || rows.back().count(column) == 0)
+        return "null";
+      return rows.back().at(column);
     }
   } // namespace
 
@@ -119,32 +100,36 @@ namespace viscoslide
     , n_processes(Utilities::MPI::n_mpi_processes(comm))
     , root(Utilities::MPI::this_mpi_process(comm) == 0)
     , clock_start(std::chrono::steady_clock::now())
-    , mesh("null")
   {
-    write("running", "");
+    write("running", "null", "null", "null");
   }
 
 
   void
-  RunRecord::finish(const std::string &status)
+  RunRecord::finish(const std::string &status) const
   {
-    wall_seconds = std::chrono::duration<double>(
-                     std::chrono::steady_clock::now() - clock_start)
-                     .count();
+    if (!root)
+      return;
+    const double wall = std::chrono::duration<double>(
+                          std::chrono::steady_clock::now() - clock_start)
+                          .count();
     const std::filesystem::path dir(directory);
     std::string dofs = last_value(dir / "continuation.csv", "n_dofs");
-    if (dofs.empty())
+    if (dofs == "null")
       dofs = last_value(dir / "approach.csv", "n_dofs");
-    const std::string cells = last_value(dir / "approach.csv", "n_cells");
-    mesh = "{\"n_dofs_last\": " + (dofs.empty() ? "null" : dofs) +
-           ", \"n_cells_after_approach\": " + (cells.empty() ? "null" : cells) +
-           "}";
-    write(status, utc_now());
+    write(status,
+          json_string(utc_now()),
+          CsvTable::format(wall),
+          "{\"n_dofs_last\": " + dofs + ", \"n_cells_after_approach\": " +
+            last_value(dir / "approach.csv", "n_cells") + "}");
   }
 
 
   void
-  RunRecord::write(const std::string &status, const std::string &end) const
+  RunRecord::write(const std::string &status,
+                   const std::string &end,
+                   const std::string &wall,
+                   const std::string &mesh) const
   {
     if (!root)
       return;
@@ -154,10 +139,8 @@ namespace viscoslide
     std::ostringstream json;
     json << "{\n  \"command_line\": " << json_string(command_line)
          << ",\n  \"status\": " << json_string(status)
-         << ",\n  \"start\": " << json_string(start)
-         << ",\n  \"end\": " << (end.empty() ? "null" : json_string(end))
-         << ",\n  \"wall_time_seconds\": "
-         << (end.empty() ? std::string("null") : CsvTable::format(wall_seconds))
+         << ",\n  \"start\": " << json_string(start) << ",\n  \"end\": " << end
+         << ",\n  \"wall_time_seconds\": " << wall
          << ",\n  \"host\": " << json_string(host)
          << ",\n  \"mpi_processes\": " << n_processes
          << ",\n  \"version\": " << json_string(version_string()) << ",\n  "

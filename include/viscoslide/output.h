@@ -58,6 +58,11 @@ namespace viscoslide
     static std::string
     format(double value);
 
+    // The rows of a table written by this class, as column -> value maps
+    // (none if the file cannot be read).
+    static std::vector<std::map<std::string, std::string>>
+    read(const std::string &filename);
+
   private:
     std::unique_ptr<std::ofstream> file;
     std::vector<std::string>       columns;

@@ -23,18 +23,20 @@ namespace viscoslide
     // Rewrites it with the end time, the wall time, the status ("done" or
     // "failed") and the size of the last mesh read from the run's tables.
     void
-    finish(const std::string &status);
+    finish(const std::string &status) const;
 
   private:
+    // end, wall and mesh are JSON values (null while the run goes on).
     void
-    write(const std::string &status, const std::string &end) const;
+    write(const std::string &status,
+          const std::string &end,
+          const std::string &wall,
+          const std::string &mesh) const;
 
     std::string                           directory, command_line, start;
     unsigned int                          n_processes;
     bool                                  root;
     std::chrono::steady_clock::time_point clock_start;
-    double                                wall_seconds = 0.;
-    std::string                           mesh; // a JSON object
   };
 } // namespace viscoslide
 

@@ -44,14 +44,21 @@ namespace viscoslide
       const std::string shape_choices =
         "parabola|circle|flat punch|power law|sinusoid|expression|table";
 
+      // A number as a message shows it.
+      std::string
+      num(const double x)
+      {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      }
+
       std::string
       entry(const std::string &section,
             const std::string &name,
             const double       value)
       {
-        std::ostringstream s;
-        s << "'" << section << "/" << name << "' = " << value;
-        return s.str();
+        return "'" + section + "/" + name + "' = " + num(value);
       }
 
       // A Prony term's weight and time must be positive and finite; where
@@ -1248,14 +1255,6 @@ namespace viscoslide
 
       // The half-width of the elastic (Hertz) line contact of a cylinder of
       // radius R under F_hat, with plane-strain modulus E_star.
-      std::string
-      num(const double x)
-      {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-      }
-
       double
       hertz_half_width(const double                     F_hat,
                        const double                     E_star,

@@ -2,6 +2,7 @@
 #include <viscoslide/surface_coupling.h>
 
 #include <cmath>
+#include <map>
 
 namespace viscoslide
 {
@@ -292,5 +293,62 @@ namespace viscoslide
     if (edges.empty()) // no contact yet: resolve the region under the apex
       edges.emplace_back(s, s);
     return flag_cells_near_edges(triangulation, edges, prm);
+  }
+
+
+  void
+  SurfaceCoupling::limit_predicted_closing(
+    const DoFHandler<2>             &dof_handler,
+    const AffineConstraints<double> &constraints,
+    const VectorType                &last,
+    const double                     last_delta,
+    const double                     last_s,
+    VectorType                      &predicted,
+    const double                     delta,
+    const double                     s) const
+  {
+    const auto  &fe     = dof_handler.get_fe();
+    const auto  &points = fe.get_unit_face_support_points();
+    const auto  &owned  = predicted.locally_owned_elements();
+    const double eps    = scales.eps;
+    // Each node once (it lies on two faces); every process adds, so that
+    // all of them compress alike.
+    std::map<types::global_dof_index, double> lift;
+    std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == top_boundary)
+            {
+              const auto face = cell->face(f);
+              face->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (fe.face_system_to_component_index(i).first == 1 &&
+                    owned.is_element(dofs[i]) &&
+                    !constraints.is_constrained(dofs[i]))
+                  {
+                    const double x =
+                      face->vertex(0)[0] +
+                      points[i][0] * (face->vertex(1)[0] - face->vertex(0)[0]);
+                    const double floor = std::min(
+                      eps,
+                      gap(profile, eps, last_delta, last_s, x, last[dofs[i]]));
+                    const double g =
+                      gap(profile, eps, delta, s, x, predicted[dofs[i]]);
+                    if (g < floor)
+                      lift[dofs[i]] = g - floor; // u_y down by the overlap
+                  }
+            }
+    std::vector<types::global_dof_index> indices;
+    std::vector<double>                  values;
+    for (const auto &[dof, value] : lift)
+      {
+        indices.push_back(dof);
+        values.push_back(value);
+      }
+    predicted.add(indices, values);
+    predicted.compress(VectorOperation::add);
+    constraints.distribute(predicted);
   }
 } // namespace viscoslide

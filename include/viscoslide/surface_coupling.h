@@ -222,6 +222,23 @@ namespace viscoslide
     int
     relax(const System &system, ConditionalOStream &out);
 
+    // A predictor extrapolates the surface nodes that closed onto the
+    // indenter in the last step as if they closed again, deep into the
+    // traction law's wall, from where Newton climbs out by about a tenth of
+    // the gap per iteration. So no surface node of `predicted` (at delta,
+    // s) is left closer than the smaller of eps and its gap in `last` (at
+    // last_delta, last_s). `last` is ghosted, `predicted` not; both live on
+    // `dof_handler`, whose element's component 1 is u_y.
+    void
+    limit_predicted_closing(const DoFHandler<2>             &dof_handler,
+                            const AffineConstraints<double> &constraints,
+                            const VectorType                &last,
+                            double                           last_delta,
+                            double                           last_s,
+                            VectorType                      &predicted,
+                            double                           delta,
+                            double                           s) const;
+
     // --- the mesh
 
     // Flags the cells at the contact edges (the top faces whose gap lies

@@ -83,8 +83,9 @@ namespace viscoslide
 
 
   // One trial step from the committed state. Along a smooth branch the
-  // secant predictor saves most of the Newton iterations; if it does not
-  // help, Newton starts from the last state.
+  // secant predictor, with the nodes it would press into the indenter held
+  // back, saves most of the Newton iterations; if it does not help, Newton
+  // starts from the last state.
   int
   ContactProblem::solve_step(const LoadState &trial)
   {
@@ -104,10 +105,18 @@ namespace viscoslide
                                                 mpi_communicator);
         increment = last_increment;
         predicted.add(ratio, increment);
-        solution                  = predicted;
         LoadState predicted_state = trial;
         if (coupling.force_control())
           predicted_state.delta += ratio * last_increment_delta;
+        coupling.limit_predicted_closing(dof_handler,
+                                         constraints,
+                                         backup,
+                                         committed.delta,
+                                         committed.s,
+                                         predicted,
+                                         predicted_state.delta,
+                                         predicted_state.s);
+        solution      = predicted;
         const int its = solve_newton(predicted_state);
         if (its >= 0)
           return its;

@@ -313,36 +313,36 @@ namespace viscoslide
     const double eps    = scales.eps;
     // Each node once (it lies on two faces); every process adds, so that
     // all of them compress alike.
-    std::map<types::global_dof_index, double> lift;
+    std::map<types::global_dof_index, double> u_y_change;
     std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == top_boundary)
+      for (const auto f : cell->face_indices())
+        {
+          const auto face = cell->face(f);
+          if (!cell->is_locally_owned() || !face->at_boundary() ||
+              face->boundary_id() != top_boundary)
+            continue;
+          face->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
             {
-              const auto face = cell->face(f);
-              face->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                if (fe.face_system_to_component_index(i).first == 1 &&
-                    owned.is_element(dofs[i]) &&
-                    !constraints.is_constrained(dofs[i]))
-                  {
-                    const double x =
-                      face->vertex(0)[0] +
-                      points[i][0] * (face->vertex(1)[0] - face->vertex(0)[0]);
-                    const double floor = std::min(
-                      eps,
-                      gap(profile, eps, last_delta, last_s, x, last[dofs[i]]));
-                    const double g =
-                      gap(profile, eps, delta, s, x, predicted[dofs[i]]);
-                    if (g < floor)
-                      lift[dofs[i]] = g - floor; // u_y down by the overlap
-                  }
+              if (fe.face_system_to_component_index(i).first != 1 ||
+                  !owned.is_element(dofs[i]) ||
+                  constraints.is_constrained(dofs[i]))
+                continue;
+              const double x =
+                face->vertex(0)[0] +
+                points[i][0] * (face->vertex(1)[0] - face->vertex(0)[0]);
+              const double floor = std::min(
+                eps, gap(profile, eps, last_delta, last_s, x, last[dofs[i]]));
+              const double g =
+                gap(profile, eps, delta, s, x, predicted[dofs[i]]);
+              if (g < floor)
+                u_y_change[dofs[i]] = g - floor; // opens the gap to floor
             }
+        }
     std::vector<types::global_dof_index> indices;
     std::vector<double>                  values;
-    for (const auto &[dof, value] : lift)
+    for (const auto &[dof, value] : u_y_change)
       {
         indices.push_back(dof);
         values.push_back(value);

@@ -318,10 +318,9 @@ namespace viscoslide
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
         {
-          const auto face = cell->face(f);
-          if (!cell->is_locally_owned() || !face->at_boundary() ||
-              face->boundary_id() != top_boundary)
+          if (!cell->is_locally_owned() || !is_top_face(cell, f))
             continue;
+          const auto face = cell->face(f);
           face->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             {

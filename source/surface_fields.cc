@@ -99,8 +99,7 @@ namespace viscoslide
       top_face(const Triangulation<2>::cell_iterator &cell)
       {
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == top_boundary)
+          if (is_top_face(cell, f))
             return f;
         return numbers::invalid_unsigned_int;
       }

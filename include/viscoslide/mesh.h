@@ -21,6 +21,16 @@ namespace viscoslide
   constexpr types::boundary_id bottom_boundary = 2;
   constexpr types::boundary_id top_boundary    = 3;
 
+  // Whether face f of `cell` lies on the block's top surface, the only
+  // one the indenter acts on.
+  template <class CellIterator>
+  inline bool
+  is_top_face(const CellIterator &cell, const unsigned int f)
+  {
+    return cell->face(f)->at_boundary() &&
+           cell->face(f)->boundary_id() == top_boundary;
+  }
+
   // The block -W/2 < x < W/2, -H < y < 0 in square coarse cells.
   void
   make_block(parallel::distributed::Triangulation<2> &triangulation,

@@ -145,8 +145,7 @@ namespace viscoslide
             }
 
           for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == top_boundary)
+            if (is_top_face(cell, f))
               {
                 face_values.reinit(cell, f);
                 coupling.add_face_terms(face_values,

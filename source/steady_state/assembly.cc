@@ -131,8 +131,7 @@ namespace viscoslide
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == top_boundary)
+          if (is_top_face(cell, f))
             {
               cell_matrix = 0;
               cell_rhs    = 0;
@@ -345,7 +344,7 @@ namespace viscoslide
     AssemblyScratch                             &scratch,
     AssemblyCopy                                &copy) const
   {
-    if (V_hat == 0. || cell->face(face_no)->boundary_id() == top_boundary)
+    if (V_hat == 0. || is_top_face(cell, face_no))
       return;
     scratch.interface_values.reinit(cell, face_no);
     const auto &values = scratch.interface_values.get_fe_face_values(0);

@@ -15,7 +15,8 @@ namespace viscoslide
          ConditionalOStream  &out)
   {
     p.assemble(true);
-    double residual = p.residual_norm();
+    double       residual = p.residual_norm();
+    unsigned int crawling = 0; // consecutive steps cut to alpha <= 1/16
     for (unsigned int it = 0; it <= max_iterations; ++it)
       {
         if (!std::isfinite(residual))
@@ -64,6 +65,19 @@ namespace viscoslide
           out << "        line search: alpha = " << alpha << std::endl;
         if (!reduced)
           return -1;
+        // Steps cut this short three times in a row mean that no
+        // equilibrium is near (a contact edge must jump): the caller's
+        // relaxation gets there, and the iterations left would be spent
+        // for nothing.
+        crawling = alpha <= 1. / 16 ? crawling + 1 : 0;
+        if (crawling == 3)
+          {
+            if (verbose)
+              out << "        Newton: steps cut to alpha <= 1/16 three times "
+                     "in a row, given up"
+                  << std::endl;
+            return -1;
+          }
         p.assemble(true);
         residual = p.residual_norm();
       }

@@ -63,7 +63,8 @@ namespace viscoslide
                double                        &delta0);
 
   // Returns the iterations used, or -1: residual or update not finite, no
-  // reduction along the update (with line search: within 8 halvings), or
+  // reduction along the update (with line search: within 8 halvings), the
+  // line search cutting the step to 1/16 or less three times in a row, or
   // no convergence within max_iterations.
   int
   newton(const NewtonProblem &problem,

@@ -191,9 +191,15 @@ namespace viscoslide
 
     // The preconditioner: the Jacobian of the window [first, first + m) of
     // points near the contact, factorized, with the load equation bordered.
+    // GMRES on it gets slower as the iterate moves away from where it was
+    // made; it is renewed once the last GMRES cost more than the average
+    // per solve since it was made, factorization included (wall times):
+    // the renewal that minimises that average.
     class WindowPreconditioner;
     std::unique_ptr<WindowPreconditioner> preconditioner;
-    unsigned int                          last_gmres_iterations = 0;
+    unsigned int                          last_gmres_iterations      = 0;
+    unsigned int                          solves_since_factorization = 0;
+    double cost_since_factorization = 0., last_gmres_cost = 0.;
 
     SurfaceQuantities last_quantities{};
     unsigned int      last_newton_iterations = 0;

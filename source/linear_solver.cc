@@ -125,16 +125,6 @@ namespace viscoslide
   }
 
 
-  template <typename F>
-  double
-  ReusedFactorization::timed(const F &f) const
-  {
-    Timer clock;
-    f();
-    return Utilities::MPI::max(clock.wall_time(), comm);
-  }
-
-
   bool
   ReusedFactorization::worth_reusing() const
   {
@@ -150,7 +140,7 @@ namespace viscoslide
     if (current)
       return;
     TimerOutput::Scope t(timer, "linear: factorize");
-    factorization_cost = timed([&] { direct = factorize(matrix); });
+    factorization_cost = timed([&] { direct = factorize(matrix); }, comm);
     current            = true;
     factorized_bulk    = assembled_bulk;
     last_iterations    = 0;
@@ -169,7 +159,7 @@ namespace viscoslide
       return;
     factorize_if_needed(matrix);
     TimerOutput::Scope t(timer, "linear: back-substitution");
-    const double       cost = timed([&] { direct->solve(x, rhs); });
+    const double       cost = timed([&] { direct->solve(x, rhs); }, comm);
     if (iteration_cost == 0.)
       iteration_cost = cost;
   }
@@ -239,18 +229,20 @@ namespace viscoslide
       typename SolverGMRES<VectorType>::AdditionalData(max_iterations + 2));
     x                      = 0.;
     bool         converged = true;
-    const double spent     = timed([&] {
-      try
-        {
-          solver.solve(matrix, x, rhs, preconditioner);
-        }
-      catch (const SolverControl::NoConvergence &)
-        {
-          converged = false;
-        }
-    });
-    last_iterations        = std::max(1u, control.last_step());
-    iteration_cost         = spent / last_iterations;
+    const double spent     = timed(
+      [&] {
+        try
+          {
+            solver.solve(matrix, x, rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            converged = false;
+          }
+      },
+      comm);
+    last_iterations = std::max(1u, control.last_step());
+    iteration_cost  = spent / last_iterations;
     krylov_iterations += control.last_step();
     if (!converged)
       last_iterations = max_iterations;

@@ -3,6 +3,7 @@
 #ifndef viscoslide_linear_solver_h
 #define viscoslide_linear_solver_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/trilinos_solver.h>
@@ -14,6 +15,18 @@
 namespace viscoslide
 {
   using namespace dealii;
+
+  // Wall time of f, the same on every process of comm (their maximum), so
+  // that a choice steered by measured costs takes the same branch on all
+  // of them (their timer sections synchronize).
+  template <typename F>
+  double
+  timed(const F &f, const MPI_Comm comm)
+  {
+    Timer clock;
+    f();
+    return Utilities::MPI::max(clock.wall_time(), comm);
+  }
 
   // At a given mesh the bulk operator is linear and fixed by one number,
   // the speed (steady state) or the time step (transient): between Newton
@@ -88,11 +101,6 @@ namespace viscoslide
           const Preconditioner &preconditioner,
           const VectorType     &rhs,
           VectorType           &x);
-    // Wall time of f, the same on every process (their maximum), so that
-    // all of them take the same branch.
-    template <typename F>
-    double
-    timed(const F &f) const;
 
     TimerOutput                                    &timer;
     MPI_Comm                                        comm;

@@ -5,6 +5,7 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <viscoslide/boundary_element/solver.h>
+#include <viscoslide/linear_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -256,16 +257,18 @@ namespace viscoslide
                                     no_contact ? 0 : last + 1 - first))
           {
             TimerOutput::Scope t(timer, "boundary element: factorization");
-            Timer              clock;
-            preconditioner =
-              std::make_unique<WindowPreconditioner>(*compliance,
-                                                     tangent,
-                                                     dashpot,
-                                                     begin,
-                                                     m,
-                                                     hold_force,
-                                                     scales.sigma_max / dx);
-            cost_since_factorization   = clock.wall_time();
+            cost_since_factorization = timed(
+              [&] {
+                preconditioner =
+                  std::make_unique<WindowPreconditioner>(*compliance,
+                                                         tangent,
+                                                         dashpot,
+                                                         begin,
+                                                         m,
+                                                         hold_force,
+                                                         scales.sigma_max / dx);
+              },
+              comm);
             solves_since_factorization = 1;
             last_gmres_cost            = 0.;
           }
@@ -328,19 +331,20 @@ namespace viscoslide
     SolverControl control(1000, 1e-8 * rhs.l2_norm(), false, false);
     SolverGMRES<Vector<double>> gmres(
       control, SolverGMRES<Vector<double>>::AdditionalData(100));
-    Timer clock;
-    try
-      {
-        gmres.solve(jacobian, update, rhs, *preconditioner);
-      }
-    catch (SolverControl::NoConvergence &)
-      {
-        // Newton's method judges the update by the residual it gives.
-      }
-    last_gmres_cost = clock.wall_time();
+    last_gmres_cost = timed(
+      [&] {
+        try
+          {
+            gmres.solve(jacobian, update, rhs, *preconditioner);
+          }
+        catch (SolverControl::NoConvergence &)
+          {
+            // Newton's method judges the update by the residual it gives.
+          }
+      },
+      comm);
     cost_since_factorization += last_gmres_cost;
     ++solves_since_factorization;
-    last_gmres_iterations = control.last_step();
   }
 
 

@@ -197,7 +197,6 @@ namespace viscoslide
     // the renewal that minimises that average.
     class WindowPreconditioner;
     std::unique_ptr<WindowPreconditioner> preconditioner;
-    unsigned int                          last_gmres_iterations      = 0;
     unsigned int                          solves_since_factorization = 0;
     double cost_since_factorization = 0., last_gmres_cost = 0.;
 

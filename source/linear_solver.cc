@@ -7,25 +7,16 @@
 
 #include <viscoslide/linear_solver.h>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+
 #include <algorithm>
 
 namespace viscoslide
 {
   namespace
   {
-    // MUMPS factorization of a Newton matrix, for solves with several
-    // right-hand sides.
-    std::unique_ptr<TrilinosWrappers::SolverDirect>
-    factorize(const TrilinosWrappers::SparseMatrix &matrix)
-    {
-      static SolverControl control(1, 0);
-      auto solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-        control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
-      solver->initialize(matrix);
-      return solver;
-    }
-
     using Vector      = TrilinosWrappers::MPI::Vector;
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
@@ -71,9 +62,9 @@ namespace viscoslide
     // w0 = K0^-1 b0, by block elimination: one back-substitution.
     struct BorderedFactorization
     {
-      TrilinosWrappers::SolverDirect &K0;
-      const Vector                   &b0, &w0;
-      const double                    schur; // d0 - b0 . w0
+      const SparseDirect &K0;
+      const Vector       &b0, &w0;
+      const double        schur; // d0 - b0 . w0
 
       void
       vmult(BlockVector &y, const BlockVector &x) const
@@ -87,7 +78,7 @@ namespace viscoslide
 
     struct Factorization
     {
-      TrilinosWrappers::SolverDirect &K0;
+      const SparseDirect &K0;
 
       void
       vmult(Vector &y, const Vector &x) const
@@ -96,6 +87,64 @@ namespace viscoslide
       }
     };
   } // namespace
+
+
+  SparseDirect::SparseDirect()
+    : problem(std::make_unique<Epetra_LinearProblem>())
+  {
+  }
+
+
+  SparseDirect::~SparseDirect() = default;
+
+
+  void
+  SparseDirect::clear()
+  {
+    mumps.reset();
+    has_factorization = false;
+  }
+
+
+  bool
+  SparseDirect::factorized() const
+  {
+    return has_factorization;
+  }
+
+
+  void
+  SparseDirect::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    if (mumps && (A.NumGlobalRows64() != analysed_rows ||
+                  A.NumGlobalNonzeros64() != analysed_nonzeros))
+      clear();
+    has_factorization = false;
+    problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&A));
+    if (!mumps)
+      {
+        mumps.reset(Amesos().Create("Amesos_Mumps", *problem));
+        AssertThrow(mumps, ExcMessage("Trilinos has no Amesos_Mumps"));
+        AssertThrow(mumps->SymbolicFactorization() == 0,
+                    ExcMessage("MUMPS analysis failed"));
+        analysed_rows     = A.NumGlobalRows64();
+        analysed_nonzeros = A.NumGlobalNonzeros64();
+        ++analyses;
+      }
+    AssertThrow(mumps->NumericFactorization() == 0,
+                ExcMessage("MUMPS factorization failed"));
+    has_factorization = true;
+  }
+
+
+  void
+  SparseDirect::solve(Vector &x, const Vector &b) const
+  {
+    problem->SetLHS(&x.trilinos_vector());
+    problem->SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+    AssertThrow(mumps->Solve() == 0, ExcMessage("MUMPS solve failed"));
+  }
 
 
   ReusedFactorization::ReusedFactorization(TimerOutput &timer,
@@ -119,7 +168,7 @@ namespace viscoslide
   void
   ReusedFactorization::clear()
   {
-    direct.reset();
+    direct.clear();
     current      = false;
     border.valid = false;
   }
@@ -128,7 +177,8 @@ namespace viscoslide
   bool
   ReusedFactorization::worth_reusing() const
   {
-    return reuse && direct && !current && factorized_bulk == assembled_bulk &&
+    return reuse && direct.factorized() && !current &&
+           factorized_bulk == assembled_bulk &&
            last_iterations * iteration_cost < factorization_cost;
   }
 
@@ -140,7 +190,7 @@ namespace viscoslide
     if (current)
       return;
     TimerOutput::Scope t(timer, "linear: factorize");
-    factorization_cost = timed([&] { direct = factorize(matrix); }, comm);
+    factorization_cost = timed([&] { direct.factorize(matrix); }, comm);
     current            = true;
     factorized_bulk    = assembled_bulk;
     last_iterations    = 0;
@@ -155,11 +205,11 @@ namespace viscoslide
                              const Vector                         &rhs,
                              Vector                               &x)
   {
-    if (worth_reusing() && gmres(matrix, Factorization{*direct}, rhs, x))
+    if (worth_reusing() && gmres(matrix, Factorization{direct}, rhs, x))
       return;
     factorize_if_needed(matrix);
     TimerOutput::Scope t(timer, "linear: back-substitution");
-    const double       cost = timed([&] { direct->solve(x, rhs); }, comm);
+    const double       cost = timed([&] { direct.solve(x, rhs); }, comm);
     if (iteration_cost == 0.)
       iteration_cost = cost;
   }
@@ -179,10 +229,8 @@ namespace viscoslide
         BlockVector       y   = bordered_vector(x, 0., comm);
         const BlockVector rhs = bordered_vector(r, m, comm);
         if (gmres(BorderedMatrix{matrix, b, d},
-                  BorderedFactorization{*direct,
-                                        border.b,
-                                        border.w,
-                                        border.d - border.b * border.w},
+                  BorderedFactorization{
+                    direct, border.b, border.w, border.d - border.b * border.w},
                   rhs,
                   y))
           {

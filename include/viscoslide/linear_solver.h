@@ -12,6 +12,9 @@
 
 #include <memory>
 
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
+
 namespace viscoslide
 {
   using namespace dealii;
@@ -27,6 +30,44 @@ namespace viscoslide
     f();
     return Utilities::MPI::max(clock.wall_time(), comm);
   }
+
+  // MUMPS, through Trilinos Amesos. Its analysis (the fill-reducing
+  // ordering and the symbolic factorization) depends on the sparsity
+  // pattern only, and on these meshes it costs about as much as the
+  // numerical factorization itself; so it is kept for every later matrix of
+  // the same pattern, until clear(). Since that choice depends on the
+  // pattern alone, not on timings, the results stay the same on every
+  // machine.
+  class SparseDirect
+  {
+  public:
+    SparseDirect();
+    ~SparseDirect();
+
+    void
+    factorize(const TrilinosWrappers::SparseMatrix &matrix);
+
+    void
+    solve(TrilinosWrappers::MPI::Vector       &x,
+          const TrilinosWrappers::MPI::Vector &b) const;
+
+    // The next matrix may have another sparsity pattern.
+    void
+    clear();
+
+    bool
+    factorized() const;
+
+    unsigned int analyses = 0;
+
+  private:
+    std::unique_ptr<Epetra_LinearProblem> problem;
+    std::unique_ptr<Amesos_BaseSolver>    mumps;
+    // The pattern the analysis was made for, by its size: a cheap guard,
+    // since clear() is the contract.
+    long long int analysed_rows = -1, analysed_nonzeros = -1;
+    bool          has_factorization = false;
+  };
 
   // At a given mesh the bulk operator is linear and fixed by one number,
   // the speed (steady state) or the time step (transient): between Newton
@@ -102,10 +143,10 @@ namespace viscoslide
           const VectorType     &rhs,
           VectorType           &x);
 
-    TimerOutput                                    &timer;
-    MPI_Comm                                        comm;
-    const bool                                      reuse;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    TimerOutput &timer;
+    MPI_Comm     comm;
+    const bool   reuse;
+    SparseDirect direct;
     // Whether `direct` is the factorization of the matrix as assembled
     // last, and the bulk operator it was made for.
     bool   current         = false;

@@ -130,7 +130,6 @@ namespace viscoslide
                     ExcMessage("MUMPS analysis failed"));
         analysed_rows     = A.NumGlobalRows64();
         analysed_nonzeros = A.NumGlobalNonzeros64();
-        ++analyses;
       }
     AssertThrow(mumps->NumericFactorization() == 0,
                 ExcMessage("MUMPS factorization failed"));

@@ -6,7 +6,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -57,8 +56,6 @@ namespace viscoslide
 
     bool
     factorized() const;
-
-    unsigned int analyses = 0;
 
   private:
     std::unique_ptr<Epetra_LinearProblem> problem;

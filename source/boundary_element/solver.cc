@@ -5,7 +5,6 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <viscoslide/boundary_element/solver.h>
-#include <viscoslide/linear_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -112,6 +111,12 @@ namespace viscoslide
       return begin >= first && begin + size <= first + m;
     }
 
+    unsigned int
+    size() const
+    {
+      return m;
+    }
+
   private:
     const SurfaceCompliance &compliance;
     const unsigned int       first, m;
@@ -205,6 +210,36 @@ namespace viscoslide
   }
 
 
+  namespace
+  {
+    // The cost of the preconditioner's renewal and of GMRES, counted from
+    // the sizes instead of timed, so that the path of Newton's method (and
+    // with it the equilibrium reached past a jump of a contact edge) is the
+    // same on every machine and under any load. The unit is one point of
+    // one FFT, n log2 n per transform; the weights were fitted to wall
+    // times on the main example and on Fig. 3 (within 15 % and 8 %): the
+    // window matrix is filled in m^2 and factorized in single precision in
+    // m^3, and each GMRES iteration applies the compliance twice, solves
+    // with the factors and orthogonalizes against up to 100 vectors.
+    double
+    factorization_work(const unsigned int m)
+    {
+      const double w = m;
+      return 0.0055 * w * w * w + 4. * w * w;
+    }
+
+    double
+    gmres_work(const unsigned int n,
+               const unsigned int m,
+               const unsigned int iterations)
+    {
+      const double points = n, w = m, k = iterations;
+      return k * (points * std::log2(points) + 0.1 * w * w +
+                  0.3 * points * std::min(k, 100.));
+    }
+  } // namespace
+
+
   void
   BoundaryElementSolver::assemble(const bool with_matrix)
   {
@@ -250,27 +285,25 @@ namespace viscoslide
             begin = std::max(0l, first - margin);
             m     = std::min<long>(last + margin + 1, n) - begin;
           }
-        if (!preconditioner ||
-            last_gmres_cost * solves_since_factorization >
-              cost_since_factorization ||
+        if (!preconditioner || !last_gmres_converged ||
+            last_gmres_work * solves_since_factorization >
+              work_since_factorization ||
             !preconditioner->covers(no_contact ? 0 : first,
                                     no_contact ? 0 : last + 1 - first))
           {
             TimerOutput::Scope t(timer, "boundary element: factorization");
-            cost_since_factorization = timed(
-              [&] {
-                preconditioner =
-                  std::make_unique<WindowPreconditioner>(*compliance,
-                                                         tangent,
-                                                         dashpot,
-                                                         begin,
-                                                         m,
-                                                         hold_force,
-                                                         scales.sigma_max / dx);
-              },
-              comm);
+            preconditioner =
+              std::make_unique<WindowPreconditioner>(*compliance,
+                                                     tangent,
+                                                     dashpot,
+                                                     begin,
+                                                     m,
+                                                     hold_force,
+                                                     scales.sigma_max / dx);
+            work_since_factorization   = factorization_work(m);
             solves_since_factorization = 1;
-            last_gmres_cost            = 0.;
+            last_gmres_work            = 0.;
+            last_gmres_converged       = true;
           }
       }
   }
@@ -331,19 +364,20 @@ namespace viscoslide
     SolverControl control(1000, 1e-8 * rhs.l2_norm(), false, false);
     SolverGMRES<Vector<double>> gmres(
       control, SolverGMRES<Vector<double>>::AdditionalData(100));
-    last_gmres_cost = timed(
-      [&] {
-        try
-          {
-            gmres.solve(jacobian, update, rhs, *preconditioner);
-          }
-        catch (SolverControl::NoConvergence &)
-          {
-            // Newton's method judges the update by the residual it gives.
-          }
-      },
-      comm);
-    cost_since_factorization += last_gmres_cost;
+    try
+      {
+        gmres.solve(jacobian, update, rhs, *preconditioner);
+        last_gmres_converged = true;
+      }
+    catch (SolverControl::NoConvergence &)
+      {
+        // Newton's method judges the update by the residual it gives; the
+        // next Jacobian gets a new factorization.
+        last_gmres_converged = false;
+      }
+    last_gmres_work =
+      gmres_work(n, preconditioner->size(), control.last_step());
+    work_since_factorization += last_gmres_work;
     ++solves_since_factorization;
   }
 

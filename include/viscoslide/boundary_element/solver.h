@@ -193,12 +193,14 @@ namespace viscoslide
     // points near the contact, factorized, with the load equation bordered.
     // GMRES on it gets slower as the iterate moves away from where it was
     // made; it is renewed once the last GMRES cost more than the average
-    // per solve since it was made, factorization included (wall times):
-    // the renewal that minimises that average.
+    // per solve since it was made, factorization included (the renewal
+    // that minimises that average), or did not converge. The costs are
+    // counted work, not wall times [solver.cc].
     class WindowPreconditioner;
     std::unique_ptr<WindowPreconditioner> preconditioner;
     unsigned int                          solves_since_factorization = 0;
-    double cost_since_factorization = 0., last_gmres_cost = 0.;
+    double work_since_factorization = 0., last_gmres_work = 0.;
+    bool   last_gmres_converged = true;
 
     SurfaceQuantities last_quantities{};
     unsigned int      last_newton_iterations = 0;

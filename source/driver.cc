@@ -717,8 +717,10 @@ namespace viscoslide
       MPI_Comm_split(comm, rank * jobs / n_procs, rank, &group);
       const bool group_root = Utilities::MPI::this_mpi_process(group) == 0;
 
-      Progress progress(cases.size(),
-                        std::count(to_run.begin(), to_run.end(), 1));
+      // Each group runs about its share of the cases; the estimate of the
+      // time left is that of this group's share.
+      const unsigned int n_to_run = std::count(to_run.begin(), to_run.end(), 1);
+      Progress           progress(cases.size(), (n_to_run + jobs - 1) / jobs);
       for (std::size_t k = 0; k < cases.size(); ++k)
         {
           std::string said;

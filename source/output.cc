@@ -439,7 +439,9 @@ namespace viscoslide
     s << std::fixed << std::setprecision(0) << 100 * case_fraction << " %, "
       << duration(elapsed) << " elapsed";
     if (done - done_before > 0.02)
-      s << ", ~" << duration(elapsed / (done - done_before) * (n_to_run - done))
+      s << ", ~"
+        << duration(elapsed / (done - done_before) *
+                    std::max(0., n_to_run - done))
         << " left";
     return s.str();
   }

@@ -19,9 +19,7 @@
 #ifndef VISCOSLIDE_VERSION
 #define VISCOSLIDE_VERSION "unknown"
 #endif
-#ifndef VISCOSLIDE_GIT_REVISION
-#define VISCOSLIDE_GIT_REVISION "unknown"
-#endif
+#include <viscoslide_revision.h> // generated at build time (CMakeLists.txt)
 
 namespace viscoslide
 {

@@ -1,184 +1,251 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <viscoslide/linear_solver.h>
 
-#include <Amesos.h>
-#include <Amesos_BaseSolver.h>
-#include <Epetra_LinearProblem.h>
+#include <Epetra_CrsMatrix.h>
+#include <dmumps_c.h>
 
 #include <algorithm>
+#include <string>
 
 namespace viscoslide
 {
-  namespace
+  using Vector = TrilinosWrappers::MPI::Vector;
+
+  struct SparseDirect::Mumps
   {
-    using Vector      = TrilinosWrappers::MPI::Vector;
-    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+    DMUMPS_STRUC_C id{};
+    bool           analysed = false;
 
-    // The bordered system's unknowns: x in block 0, the scalar t in block
-    // 1 (one entry, owned by the first process).
-    double
-    scalar(const BlockVector &v)
+    MUMPS_INT &
+    icntl(const unsigned int i)
     {
-      return v.block(1).mean_value();
+      return id.icntl[i - 1];
     }
-
-    BlockVector
-    bordered_vector(const Vector &x, const double t, const MPI_Comm comm)
+    MUMPS_INT
+    infog(const unsigned int i) const
     {
-      IndexSet one(1);
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        one.add_index(0);
-      BlockVector v(std::vector<IndexSet>{x.locally_owned_elements(), one},
-                    comm);
-      v.block(0) = x;
-      v.block(1) = t;
-      return v;
+      return id.infog[i - 1];
     }
-
-    // [K b; b^T d]
-    struct BorderedMatrix
-    {
-      const TrilinosWrappers::SparseMatrix &K;
-      const Vector                         &b;
-      const double                          d;
-
-      void
-      vmult(BlockVector &y, const BlockVector &x) const
-      {
-        const double t = scalar(x);
-        K.vmult(y.block(0), x.block(0));
-        y.block(0).add(t, b);
-        y.block(1) = (b * x.block(0)) + d * t;
-      }
-    };
-
-    // The inverse of [K0 b0; b0^T d0] from the factorization of K0 and
-    // w0 = K0^-1 b0, by block elimination: one back-substitution.
-    struct BorderedFactorization
-    {
-      const SparseDirect &K0;
-      const Vector       &b0, &w0;
-      const double        schur; // d0 - b0 . w0
-
-      void
-      vmult(BlockVector &y, const BlockVector &x) const
-      {
-        K0.solve(y.block(0), x.block(0));
-        const double t = (scalar(x) - b0 * y.block(0)) / schur;
-        y.block(0).add(-t, w0);
-        y.block(1) = t;
-      }
-    };
-
-    struct Factorization
-    {
-      const SparseDirect &K0;
-
-      void
-      vmult(Vector &y, const Vector &x) const
-      {
-        K0.solve(y, x);
-      }
-    };
-  } // namespace
+  };
 
 
-  SparseDirect::SparseDirect()
-    : problem(std::make_unique<Epetra_LinearProblem>())
+  SparseDirect::SparseDirect(const MPI_Comm comm)
+    : comm(comm)
   {
   }
 
 
-  SparseDirect::~SparseDirect() = default;
+  SparseDirect::~SparseDirect()
+  {
+    clear();
+  }
 
 
   void
   SparseDirect::clear()
   {
-    mumps.reset();
-    has_factorization = false;
-  }
-
-
-  bool
-  SparseDirect::factorized() const
-  {
-    return has_factorization;
+    if (mumps)
+      {
+        mumps->id.job = -2;
+        dmumps_c(&mumps->id);
+        mumps.reset();
+      }
   }
 
 
   void
-  SparseDirect::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  SparseDirect::call(const int job, const char *what)
+  {
+    mumps->id.job = job;
+    dmumps_c(&mumps->id);
+    AssertThrow(mumps->infog(1) >= 0,
+                ExcMessage(std::string("MUMPS failed in its ") + what +
+                           " (INFOG(1) = " + std::to_string(mumps->infog(1)) +
+                           ", INFOG(2) = " + std::to_string(mumps->infog(2)) +
+                           ")"));
+  }
+
+
+  // The pattern of the locally owned rows in coordinate format, the Schur
+  // unknowns, and the analysis.
+  void
+  SparseDirect::analyse(const Epetra_CrsMatrix &A, const std::vector<int> &T)
+  {
+    mumps           = std::make_unique<Mumps>();
+    auto &id        = mumps->id;
+    id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+    id.par          = 1; // the host works too
+    id.sym          = 0;
+    call(-1, "initialization");
+    mumps->icntl(1)  = -1; // no messages
+    mumps->icntl(2)  = -1;
+    mumps->icntl(3)  = -1;
+    mumps->icntl(4)  = 0;
+    mumps->icntl(14) = 30; // workspace beyond the estimate, percent
+    mumps->icntl(18) = 3;  // each process gives its rows
+    mumps->icntl(19) = 1;  // the Schur complement on the host, by rows
+    mumps->icntl(20) = 0;  // dense right-hand side on the host
+    mumps->icntl(21) = 0;  // solution on the host
+
+    rows.clear();
+    columns.clear();
+    for (int r = 0; r < A.NumMyRows(); ++r)
+      {
+        int     n;
+        double *v;
+        int    *c;
+        A.ExtractMyRowView(r, n, v, c);
+        for (int j = 0; j < n; ++j)
+          {
+            rows.push_back(static_cast<int>(A.RowMap().GID64(r)) + 1);
+            columns.push_back(static_cast<int>(A.ColMap().GID64(c[j])) + 1);
+          }
+      }
+    values.resize(rows.size());
+    id.n            = static_cast<MUMPS_INT>(A.NumGlobalRows64());
+    id.nnz_loc      = rows.size();
+    id.nz_loc       = static_cast<MUMPS_INT>(rows.size());
+    id.irn_loc      = rows.data();
+    id.jcn_loc      = columns.data();
+    id.a_loc        = values.data();
+    const bool host = Utilities::MPI::this_mpi_process(comm) == 0;
+    schur_list.clear();
+    if (host)
+      for (const int t : T)
+        schur_list.push_back(t + 1);
+    id.size_schur    = static_cast<MUMPS_INT>(T.size());
+    id.listvar_schur = schur_list.data();
+    schur.assign(host ? T.size() * T.size() : 1, 0.);
+    id.schur     = schur.data();
+    id.schur_lld = static_cast<MUMPS_INT>(T.size());
+    call(1, "analysis");
+    mumps->analysed = true;
+
+    // Where each process's rows go in the gathered right-hand side.
+    const int first = static_cast<int>(A.RowMap().MinMyGID64());
+    const int count = A.NumMyRows();
+    counts          = Utilities::MPI::all_gather(comm, count);
+    offsets         = Utilities::MPI::all_gather(comm, count > 0 ? first : 0);
+    gathered.assign(host ? id.n : 1, 0.);
+    reduced.assign(T.size(), 0.);
+  }
+
+
+  void
+  SparseDirect::factorize(const TrilinosWrappers::SparseMatrix &matrix,
+                          const std::vector<int>               &T)
   {
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
-    if (mumps && (A.NumGlobalRows64() != analysed_rows ||
-                  A.NumGlobalNonzeros64() != analysed_nonzeros))
-      clear();
-    has_factorization = false;
-    problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&A));
     if (!mumps)
+      analyse(A, T);
+    std::size_t k = 0;
+    for (int r = 0; r < A.NumMyRows(); ++r)
       {
-        mumps.reset(Amesos().Create("Amesos_Mumps", *problem));
-        AssertThrow(mumps, ExcMessage("Trilinos has no Amesos_Mumps"));
-        AssertThrow(mumps->SymbolicFactorization() == 0,
-                    ExcMessage("MUMPS analysis failed"));
-        analysed_rows     = A.NumGlobalRows64();
-        analysed_nonzeros = A.NumGlobalNonzeros64();
+        int     n;
+        double *v;
+        int    *c;
+        A.ExtractMyRowView(r, n, v, c);
+        for (int j = 0; j < n; ++j)
+          values[k++] = v[j];
       }
-    AssertThrow(mumps->NumericFactorization() == 0,
-                ExcMessage("MUMPS factorization failed"));
-    has_factorization = true;
+    AssertThrow(k == values.size(),
+                ExcMessage("The matrix changed its pattern without clear()"));
+    // A workspace too small for the pivoting that occurred: more, again.
+    for (int attempt = 0;; ++attempt)
+      {
+        mumps->id.job = 2;
+        dmumps_c(&mumps->id);
+        const int e = mumps->infog(1);
+        if (attempt < 4 && (e == -8 || e == -9 || e == -11 || e == -12 ||
+                            e == -14 || e == -15 || e == -17 || e == -20))
+          mumps->icntl(14) *= 2;
+        else
+          break;
+      }
+    AssertThrow(mumps->infog(1) >= 0,
+                ExcMessage("MUMPS failed in its factorization (INFOG(1) = " +
+                           std::to_string(mumps->infog(1)) + ")"));
+  }
+
+
+  std::vector<double>
+  SparseDirect::reduce(const Vector &b)
+  {
+    MPI_Gatherv(b.trilinos_vector()[0],
+                counts[Utilities::MPI::this_mpi_process(comm)],
+                MPI_DOUBLE,
+                gathered.data(),
+                counts.data(),
+                offsets.data(),
+                MPI_DOUBLE,
+                0,
+                comm);
+    auto &id         = mumps->id;
+    id.rhs           = gathered.data();
+    id.nrhs          = 1;
+    id.lrhs          = id.n;
+    id.redrhs        = reduced.data();
+    id.lredrhs       = id.size_schur;
+    mumps->icntl(26) = 1;
+    call(3, "reduction to the Schur unknowns");
+    return reduced;
   }
 
 
   void
-  SparseDirect::solve(Vector &x, const Vector &b) const
+  SparseDirect::expand(const std::vector<double> &x_T, Vector &x)
   {
-    problem->SetLHS(&x.trilinos_vector());
-    problem->SetRHS(const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
-    AssertThrow(mumps->Solve() == 0, ExcMessage("MUMPS solve failed"));
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::copy(x_T.begin(), x_T.end(), reduced.begin());
+    mumps->icntl(26) = 2;
+    call(3, "expansion from the Schur unknowns");
+    mumps->icntl(26) = 0;
+    MPI_Scatterv(gathered.data(),
+                 counts.data(),
+                 offsets.data(),
+                 MPI_DOUBLE,
+                 x.trilinos_vector()[0],
+                 counts[Utilities::MPI::this_mpi_process(comm)],
+                 MPI_DOUBLE,
+                 0,
+                 comm);
   }
 
 
-  ReusedFactorization::ReusedFactorization(TimerOutput &timer,
-                                           MPI_Comm     comm,
-                                           const bool   reuse)
+  ReusedFactorization::ReusedFactorization(TimerOutput   &timer,
+                                           const MPI_Comm comm)
     : timer(timer)
     , comm(comm)
-    , reuse(reuse)
+    , direct(comm)
   {
+  }
+
+
+  void
+  ReusedFactorization::reinit(const IndexSet &surface_unknowns)
+  {
+    direct.clear();
+    factorized = false;
+    surface    = surface_unknowns;
+    std::vector<int> owned;
+    for (const auto i : surface)
+      owned.push_back(static_cast<int>(i));
+    surface_list.clear();
+    for (const auto &part : Utilities::MPI::all_gather(comm, owned))
+      surface_list.insert(surface_list.end(), part.begin(), part.end());
+    std::sort(surface_list.begin(), surface_list.end());
   }
 
 
   void
   ReusedFactorization::matrix_changed(const double bulk)
   {
-    current        = false;
     assembled_bulk = bulk;
-  }
-
-
-  void
-  ReusedFactorization::clear()
-  {
-    direct.clear();
-    current      = false;
-    border.valid = false;
-  }
-
-
-  bool
-  ReusedFactorization::worth_reusing() const
-  {
-    return reuse && direct.factorized() && !current &&
-           factorized_bulk == assembled_bulk &&
-           last_iterations * iteration_cost < factorization_cost;
   }
 
 
@@ -186,16 +253,52 @@ namespace viscoslide
   ReusedFactorization::factorize_if_needed(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    if (current)
+    if (factorized && factorized_bulk == assembled_bulk)
       return;
     TimerOutput::Scope t(timer, "linear: factorize");
-    factorization_cost = timed([&] { direct.factorize(matrix); }, comm);
-    current            = true;
-    factorized_bulk    = assembled_bulk;
-    last_iterations    = 0;
-    border.valid       = false;
-    iteration_cost     = 0.;
+    direct.factorize(matrix, surface_list);
+    factorized_block = surface_block(matrix, &entries);
+    factorized       = true;
+    factorized_bulk  = assembled_bulk;
     ++factorizations;
+  }
+
+
+  // The owned rows of the surface block, in the order of the matrix's
+  // rows.
+  std::vector<double>
+  ReusedFactorization::surface_block(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    std::vector<Entry>                   *visited) const
+  {
+    const Epetra_CrsMatrix &A        = matrix.trilinos_matrix();
+    const auto              position = [&](const long long int i) {
+      const auto p =
+        std::lower_bound(surface_list.begin(), surface_list.end(), i);
+      return (p != surface_list.end() && *p == i) ? p - surface_list.begin()
+                                                               : -1;
+    };
+    std::vector<double> block;
+    if (visited)
+      visited->clear();
+    for (const auto row : surface)
+      {
+        const int r = A.LRID(static_cast<long long int>(row));
+        int       n;
+        double   *v;
+        int      *c;
+        A.ExtractMyRowView(r, n, v, c);
+        const auto i = position(row);
+        for (int j = 0; j < n; ++j)
+          if (const auto p = position(A.ColMap().GID64(c[j])); p >= 0)
+            {
+              block.push_back(v[j]);
+              if (visited)
+                visited->push_back(
+                  {static_cast<unsigned int>(i), static_cast<unsigned int>(p)});
+            }
+      }
+    return block;
   }
 
 
@@ -204,13 +307,7 @@ namespace viscoslide
                              const Vector                         &rhs,
                              Vector                               &x)
   {
-    if (worth_reusing() && gmres(matrix, Factorization{direct}, rhs, x))
-      return;
-    factorize_if_needed(matrix);
-    TimerOutput::Scope t(timer, "linear: back-substitution");
-    const double       cost = timed([&] { direct.solve(x, rhs); }, comm);
-    if (iteration_cost == 0.)
-      iteration_cost = cost;
+    solve_condensed(matrix, nullptr, 0., rhs, 0., x);
   }
 
 
@@ -223,76 +320,85 @@ namespace viscoslide
     const double                          m,
     Vector                               &x)
   {
-    if (worth_reusing() && border.valid)
-      {
-        BlockVector       y   = bordered_vector(x, 0., comm);
-        const BlockVector rhs = bordered_vector(r, m, comm);
-        if (gmres(BorderedMatrix{matrix, b, d},
-                  BorderedFactorization{
-                    direct, border.b, border.w, border.d - border.b * border.w},
-                  rhs,
-                  y))
-          {
-            x = y.block(0);
-            return scalar(y);
-          }
-      }
-    // Exact: x = K^-1 r - t K^-1 b. K^-1 b and the border are kept for the
-    // preconditioner of the next matrices.
-    Vector w;
-    w.reinit(r);
-    solve(matrix, r, x);
-    solve(matrix, b, w);
-    const double t = (m - b * x) / (d - b * w);
-    x.add(-t, w);
-    if (reuse)
-      {
-        border.b.reinit(b);
-        border.b     = b;
-        border.w     = w;
-        border.d     = d;
-        border.valid = true;
-      }
-    return t;
+    return solve_condensed(matrix, &b, d, r, m, x);
   }
 
 
-  // GMRES to a relative 1e-4, enough for Newton's method, which judges the
-  // residual itself; given up once it has cost as much as a new
-  // factorization.
-  template <typename VectorType, typename Matrix, typename Preconditioner>
-  bool
-  ReusedFactorization::gmres(const Matrix         &matrix,
-                             const Preconditioner &preconditioner,
-                             const VectorType     &rhs,
-                             VectorType           &x)
+  // On the host: the dense system on T,
+  //   [S + D   b_T] [x_T]   [r_T - A_TI A_II^-1 r_I]
+  //   [b_T^T   d  ] [t  ] = [m                     ],
+  // D = J_TT - A_TT; then x from x_T by the back-substitution.
+  double
+  ReusedFactorization::solve_condensed(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const Vector                         *b,
+    const double                          d,
+    const Vector                         &r,
+    const double                          m,
+    Vector                               &x)
   {
-    TimerOutput::Scope t(timer, "linear: GMRES on an earlier factorization");
-    const unsigned int max_iterations = static_cast<unsigned int>(
-      std::clamp(factorization_cost / iteration_cost, 2., 50.));
-    SolverControl           control(max_iterations, 1e-4 * rhs.l2_norm());
-    SolverGMRES<VectorType> solver(
-      control,
-      typename SolverGMRES<VectorType>::AdditionalData(max_iterations + 2));
-    x                      = 0.;
-    bool         converged = true;
-    const double spent     = timed(
-      [&] {
-        try
+    factorize_if_needed(matrix);
+    TimerOutput::Scope t(timer, "linear: surface solve");
+    const unsigned int k = surface_list.size();
+    // The owned changes of the surface block and the owned border, as
+    // (row, column, value) and (row, value), for the host.
+    std::vector<double> owned;
+    {
+      const std::vector<double> block = surface_block(matrix, nullptr);
+      AssertThrow(block.size() == factorized_block.size(),
+                  ExcMessage(
+                    "The matrix changed its pattern without reinit()"));
+      for (unsigned int e = 0; e < block.size(); ++e)
+        if (const double change = block[e] - factorized_block[e]; change != 0.)
+          owned.insert(owned.end(),
+                       {double(entries[e].row),
+                        double(entries[e].column),
+                        change});
+    }
+    std::vector<double> border;
+    if (b)
+      for (const auto i : surface)
+        border.insert(border.end(),
+                      {double(std::lower_bound(surface_list.begin(),
+                                               surface_list.end(),
+                                               static_cast<int>(i)) -
+                              surface_list.begin()),
+                       (*b)[i]});
+    const auto changes = Utilities::MPI::gather(comm, owned, 0);
+    const auto borders = Utilities::MPI::gather(comm, border, 0);
+
+    const std::vector<double> reduced = direct.reduce(r);
+    double                    t_value = 0.;
+    std::vector<double>       x_T(k);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const unsigned int       n = b ? k + 1 : k;
+        LAPACKFullMatrix<double> K(n, n);
+        const auto              &S = direct.schur_complement();
+        for (unsigned int i = 0; i < k; ++i)
+          for (unsigned int j = 0; j < k; ++j)
+            K(i, j) = S[i * k + j];
+        for (const auto &part : changes)
+          for (unsigned int e = 0; e < part.size(); e += 3)
+            K(part[e], part[e + 1]) += part[e + 2];
+        dealii::Vector<double> y(n);
+        std::copy(reduced.begin(), reduced.end(), y.begin());
+        if (b)
           {
-            solver.solve(matrix, x, rhs, preconditioner);
+            for (const auto &part : borders)
+              for (unsigned int e = 0; e < part.size(); e += 2)
+                K(k, part[e]) = K(part[e], k) = part[e + 1];
+            K(k, k) = d;
+            y(k)    = m;
           }
-        catch (const SolverControl::NoConvergence &)
-          {
-            converged = false;
-          }
-      },
-      comm);
-    last_iterations = std::max(1u, control.last_step());
-    iteration_cost  = spent / last_iterations;
-    krylov_iterations += control.last_step();
-    if (!converged)
-      last_iterations = max_iterations;
-    return converged;
+        K.compute_lu_factorization();
+        K.solve(y);
+        std::copy(y.begin(), y.begin() + k, x_T.begin());
+        if (b)
+          t_value = y(k);
+      }
+    direct.expand(x_T, x);
+    ++surface_solves;
+    return Utilities::MPI::broadcast(comm, t_value, 0);
   }
 } // namespace viscoslide

@@ -276,6 +276,32 @@ namespace viscoslide
   }
 
 
+  IndexSet
+  SurfaceCoupling::surface_unknowns(
+    const DoFHandler<2>             &dof_handler,
+    const AffineConstraints<double> &constraints) const
+  {
+    const auto &fe    = dof_handler.get_fe();
+    const auto &owned = dof_handler.locally_owned_dofs();
+    IndexSet    unknowns(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto f : cell->face_indices())
+          if (is_top_face(cell, f))
+            {
+              cell->face(f)->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (fe.face_system_to_component_index(i).first == 1 &&
+                    owned.is_element(dofs[i]) &&
+                    !constraints.is_constrained(dofs[i]))
+                  unknowns.add_index(dofs[i]);
+            }
+    unknowns.compress();
+    return unknowns;
+  }
+
+
   bool
   SurfaceCoupling::flag_contact_edges(
     parallel::distributed::Triangulation<2> &triangulation,

@@ -1,100 +1,111 @@
-// The direct solver of both solvers' Newton systems, with the
-// factorization of one Jacobian reused for the next ones.
+// The direct solver of both solvers' Newton systems: one sparse
+// factorization per bulk operator, condensed onto the surface.
 #ifndef viscoslide_linear_solver_h
 #define viscoslide_linear_solver_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <vector>
 
-class Amesos_BaseSolver;
-class Epetra_LinearProblem;
+class Epetra_CrsMatrix;
 
 namespace viscoslide
 {
   using namespace dealii;
 
-  // Wall time of f, the same on every process of comm (their maximum), so
-  // that a choice steered by measured costs takes the same branch on all
-  // of them (their timer sections synchronize).
-  template <typename F>
-  double
-  timed(const F &f, const MPI_Comm comm)
-  {
-    Timer clock;
-    f();
-    return Utilities::MPI::max(clock.wall_time(), comm);
-  }
-
-  // MUMPS, through Trilinos Amesos. Its analysis (the fill-reducing
-  // ordering and the symbolic factorization) depends on the sparsity
-  // pattern only, and on these meshes it costs about as much as the
-  // numerical factorization itself; so it is kept for every later matrix of
-  // the same pattern, until clear(). Since that choice depends on the
-  // pattern alone, not on timings, the results stay the same on every
-  // machine.
+  // MUMPS through its own C interface (Amesos does not reach its Schur
+  // complement): the factorization of a matrix A whose unknowns split into
+  // the interior I and a few unknowns T, with the Schur complement
+  //   S = A_TT - A_TI A_II^-1 A_IT
+  // returned dense on the first process (the host). Its analysis (the
+  // fill-reducing ordering and the symbolic factorization) depends on the
+  // sparsity pattern and T only, so it is kept until clear().
   class SparseDirect
   {
   public:
-    SparseDirect();
+    explicit SparseDirect(MPI_Comm comm);
     ~SparseDirect();
 
+    // T: global indices, ascending, the same on every process.
     void
-    factorize(const TrilinosWrappers::SparseMatrix &matrix);
+    factorize(const TrilinosWrappers::SparseMatrix &matrix,
+              const std::vector<int>               &T);
 
-    void
-    solve(TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &b) const;
-
-    // The next matrix may have another sparsity pattern.
+    // Drops the analysis: the next matrix may have another pattern or T.
     void
     clear();
 
-    bool
-    factorized() const;
+    // On the host: S, row by row, and T (global indices, ascending).
+    const std::vector<double> &
+    schur_complement() const
+    {
+      return schur;
+    }
+
+    // The forward elimination of b, on the host: b_T - A_TI A_II^-1 b_I.
+    std::vector<double>
+    reduce(const TrilinosWrappers::MPI::Vector &b);
+    // After reduce(b), the solution x with x_T given (on the host):
+    // x_I = A_II^-1 (b_I - A_IT x_T).
+    void
+    expand(const std::vector<double> &x_T, TrilinosWrappers::MPI::Vector &x);
 
   private:
-    std::unique_ptr<Epetra_LinearProblem> problem;
-    std::unique_ptr<Amesos_BaseSolver>    mumps;
-    // The pattern the analysis was made for, by its size: a cheap guard,
-    // since clear() is the contract.
-    long long int analysed_rows = -1, analysed_nonzeros = -1;
-    bool          has_factorization = false;
+    void
+    analyse(const Epetra_CrsMatrix &A, const std::vector<int> &T);
+    void
+    call(int job, const char *what);
+
+    MPI_Comm comm;
+    struct Mumps;
+    std::unique_ptr<Mumps> mumps;
+    // The local entries in MUMPS's coordinate format (1-based).
+    std::vector<int>    rows, columns;
+    std::vector<double> values;
+    std::vector<int>    schur_list; // 1-based
+    std::vector<double> schur;
+    // The right-hand side gathered on the host, kept from reduce() to
+    // expand(); the locally owned ranges of all processes.
+    std::vector<double> gathered;
+    std::vector<int>    counts, offsets;
+    std::vector<double> reduced;
   };
 
   // At a given mesh the bulk operator is linear and fixed by one number,
   // the speed (steady state) or the time step (transient): between Newton
-  // iterations only the surface terms of the Jacobian change, on the few
-  // hundred dofs near the contact. So the factorization of one Jacobian
-  // preconditions GMRES for the later Jacobians of the same bulk operator.
-  // Whether that is cheaper than a new factorization depends on the mesh
-  // and on how far the contact moved since, so the choice is steered by
-  // the measured costs: GMRES is tried while its expected cost (the
-  // iterations it needed last, at the measured cost of one) is below that
-  // of the last factorization, and is given up for a new factorization as
-  // soon as it has spent as much [linear_solver.cc].
+  // iterations only the surface terms of the Jacobian change, and they act
+  // on the u_y unknowns of the top surface alone (the k surface unknowns T
+  // of SurfaceCoupling::surface_unknowns()). So the first Jacobian A of a
+  // bulk operator is factorized with its Schur complement S on T, and
+  // every later Jacobian J = A + D of that operator, D confined to T x T,
+  // is solved exactly with it: MUMPS's forward elimination reduces the
+  // right-hand side to T, a dense LU of S + D solves on T, and MUMPS's
+  // back-substitution expands the solution. A Newton iteration then costs
+  // one sparse substitution and a k x k dense factorization (k ~ 1000) in
+  // place of a sparse factorization; the solves stay exact, so the results
+  // do not depend on a choice between solvers.
   class ReusedFactorization
   {
   public:
-    // With reuse = false every new matrix is factorized: the transient
-    // solver's states are path-dependent (a contact edge that jumps from
-    // node to node can land on either of two neighbouring equilibria), and
-    // there the exact solves keep its results independent of the costs
-    // measured on a given machine.
-    ReusedFactorization(TimerOutput &timer, MPI_Comm comm, bool reuse = true);
+    ReusedFactorization(TimerOutput &timer, MPI_Comm comm);
+
+    // After every setup: the locally owned surface unknowns, on whose
+    // block alone two Jacobians of one bulk operator may differ, and on
+    // which the border of solve_bordered() lives. Drops the factorization.
+    void
+    reinit(const IndexSet &surface_unknowns);
 
     // The matrix was assembled anew, for the bulk operator named by
     // `bulk` (the speed or the time step).
     void
     matrix_changed(double bulk);
-
-    // The mesh changed: the factorization refers to the old matrix.
-    void
-    clear();
 
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
@@ -104,10 +115,7 @@ namespace viscoslide
     // The bordered system of force control,
     //   [K   b] [x]   [r]
     //   [b^T d] [t] = [m],
-    // for K = matrix; returns t. With a reusable factorization, one GMRES
-    // on the whole system, preconditioned by the bordered system of the
-    // factorized matrix; else two back-substitutions of a factorization
-    // of K.
+    // for K = matrix and b zero outside the surface unknowns; returns t.
     double
     solve_bordered(const TrilinosWrappers::SparseMatrix &matrix,
                    const TrilinosWrappers::MPI::Vector  &b,
@@ -117,43 +125,43 @@ namespace viscoslide
                    TrilinosWrappers::MPI::Vector        &x);
 
     // Counters for the log and the benchmarks.
-    unsigned int factorizations = 0, krylov_iterations = 0;
+    unsigned int factorizations = 0, surface_solves = 0;
 
   private:
-    // The border of the factorized matrix and K0^-1 b0, for the
-    // preconditioner of the bordered system.
-    struct Border
+    // The owned entries of the surface block, in the order surface_block()
+    // visits them: (row, column) positions in T.
+    struct Entry
     {
-      TrilinosWrappers::MPI::Vector b, w;
-      double                        d     = 0.;
-      bool                          valid = false;
+      unsigned int row, column;
     };
 
-    bool
-    worth_reusing() const;
     void
     factorize_if_needed(const TrilinosWrappers::SparseMatrix &matrix);
-    template <typename VectorType, typename Matrix, typename Preconditioner>
-    bool
-    gmres(const Matrix         &matrix,
-          const Preconditioner &preconditioner,
-          const VectorType     &rhs,
-          VectorType           &x);
+    std::vector<double>
+    surface_block(const TrilinosWrappers::SparseMatrix &matrix,
+                  std::vector<Entry>                   *entries) const;
+    double
+    solve_condensed(const TrilinosWrappers::SparseMatrix &matrix,
+                    const TrilinosWrappers::MPI::Vector  *b,
+                    double                                d,
+                    const TrilinosWrappers::MPI::Vector  &r,
+                    double                                m,
+                    TrilinosWrappers::MPI::Vector        &x);
 
     TimerOutput &timer;
     MPI_Comm     comm;
-    const bool   reuse;
     SparseDirect direct;
-    // Whether `direct` is the factorization of the matrix as assembled
-    // last, and the bulk operator it was made for.
-    bool   current         = false;
+    // The owned surface unknowns, and all of them (ascending).
+    IndexSet         surface;
+    std::vector<int> surface_list;
+    // Whether `direct` holds a factorization of the present bulk operator.
+    bool   factorized      = false;
     double factorized_bulk = 0.;
     double assembled_bulk  = 0.;
-    // Measured: the last factorization, one GMRES iteration (at first one
-    // back-substitution), and the iterations GMRES needed last.
-    double       factorization_cost = 0., iteration_cost = 0.;
-    unsigned int last_iterations = 0;
-    Border       border;
+    // The owned surface block of the factorized matrix, and where its
+    // entries go.
+    std::vector<Entry>  entries;
+    std::vector<double> factorized_block;
   };
 } // namespace viscoslide
 

@@ -239,6 +239,14 @@ namespace viscoslide
                             double                           delta,
                             double                           s) const;
 
+    // The locally owned unknowns the face terms act on: u_y (component 1
+    // of the element of `dof_handler`) on the top surface, less the
+    // constrained ones. Two Jacobians that differ in their surface terms
+    // alone differ only on these rows and columns (ReusedFactorization).
+    IndexSet
+    surface_unknowns(const DoFHandler<2>             &dof_handler,
+                     const AffineConstraints<double> &constraints) const;
+
     // --- the mesh
 
     // Flags the cells at the contact edges (the top faces whose gap lies

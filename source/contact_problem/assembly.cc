@@ -46,7 +46,7 @@ namespace viscoslide
                                       mpi_communicator));
     sp.compress();
     // The solver objects refer to the old matrix: release them first.
-    linear_solver.clear();
+    linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints));
     amg.reset();
     system_matrix.reinit(sp);
 

@@ -52,7 +52,7 @@ namespace viscoslide
     , history_fe(QGauss<1>(3))
     , history_dof_handler(triangulation)
     , history(n_arm_stress_components * material.n_arms() + 1)
-    , linear_solver(timer, mpi_communicator, false)
+    , linear_solver(timer, mpi_communicator)
     , writer(parameters.output.directory,
              mpi_communicator,
              parameters.output.field_format)

@@ -115,7 +115,7 @@ namespace viscoslide
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
-    linear_solver.clear(); // it refers to the old matrix
+    linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints));
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,
@@ -330,8 +330,8 @@ namespace viscoslide
           << "  L_hat " << std::setw(11)
           << last_quantities.contact_length / scales.R << "  Newton " << its
           << "  dofs " << dof_handler.n_dofs() << "  factorizations "
-          << linear_solver.factorizations << "  GMRES "
-          << linear_solver.krylov_iterations << std::endl;
+          << linear_solver.factorizations << "  surface solves "
+          << linear_solver.surface_solves << std::endl;
     return its;
   }
 

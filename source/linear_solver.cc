@@ -19,7 +19,6 @@ namespace viscoslide
   struct SparseDirect::Mumps
   {
     DMUMPS_STRUC_C id{};
-    bool           analysed = false;
 
     MUMPS_INT &
     icntl(const unsigned int i)
@@ -74,13 +73,16 @@ namespace viscoslide
   // The pattern of the locally owned rows in coordinate format, the Schur
   // unknowns, and the analysis.
   void
-  SparseDirect::analyse(const Epetra_CrsMatrix &A, const std::vector<int> &T)
+  SparseDirect::analyse(const TrilinosWrappers::SparseMatrix &matrix,
+                        const std::vector<int>               &T)
   {
-    mumps           = std::make_unique<Mumps>();
-    auto &id        = mumps->id;
-    id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
-    id.par          = 1; // the host works too
-    id.sym          = 0;
+    clear();
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    mumps                     = std::make_unique<Mumps>();
+    auto &id                  = mumps->id;
+    id.comm_fortran           = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+    id.par                    = 1; // the host works too
+    id.sym                    = 0;
     call(-1, "initialization");
     mumps->icntl(1)  = -1; // no messages
     mumps->icntl(2)  = -1;
@@ -124,7 +126,6 @@ namespace viscoslide
     id.schur     = schur.data();
     id.schur_lld = static_cast<MUMPS_INT>(T.size());
     call(1, "analysis");
-    mumps->analysed = true;
 
     // Where each process's rows go in the gathered right-hand side.
     const int first = static_cast<int>(A.RowMap().MinMyGID64());
@@ -137,13 +138,10 @@ namespace viscoslide
 
 
   void
-  SparseDirect::factorize(const TrilinosWrappers::SparseMatrix &matrix,
-                          const std::vector<int>               &T)
+  SparseDirect::factorize(const TrilinosWrappers::SparseMatrix &matrix)
   {
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
-    if (!mumps)
-      analyse(A, T);
-    std::size_t k = 0;
+    std::size_t             k = 0;
     for (int r = 0; r < A.NumMyRows(); ++r)
       {
         int     n;
@@ -255,8 +253,13 @@ namespace viscoslide
   {
     if (factorized && factorized_bulk == assembled_bulk)
       return;
+    if (!direct.analysed())
+      {
+        TimerOutput::Scope t(timer, "linear: analyse");
+        direct.analyse(matrix, surface_list);
+      }
     TimerOutput::Scope t(timer, "linear: factorize");
-    direct.factorize(matrix, surface_list);
+    direct.factorize(matrix);
     factorized_block = surface_block(matrix, &entries);
     factorized       = true;
     factorized_bulk  = assembled_bulk;

@@ -136,6 +136,10 @@ namespace viscoslide
     // Residual -R(u) and, if asked, the consistent tangent dR/du.
     void
     assemble(bool with_matrix);
+    // The bulk part of the tangent, the same for every Newton iteration of
+    // a time step: made once per time step and mesh.
+    void
+    assemble_bulk();
     // MUMPS (linear_solver) or, beyond 'Direct solver limit', GMRES
     // with AMG.
     bool
@@ -277,6 +281,10 @@ namespace viscoslide
     AffineConstraints<double> constraints;
 
     TrilinosWrappers::SparseMatrix system_matrix;
+    // The matrix of the bulk terms, and the time step it was made for (-1:
+    // none on this mesh).
+    TrilinosWrappers::SparseMatrix bulk_matrix;
+    double                         bulk_dt = -1.;
     TrilinosWrappers::MPI::Vector  solution;     // ghosted, current iterate
     TrilinosWrappers::MPI::Vector  old_solution; // ghosted, last committed
     TrilinosWrappers::MPI::Vector  system_rhs;

@@ -33,10 +33,20 @@ namespace viscoslide
     explicit SparseDirect(MPI_Comm comm);
     ~SparseDirect();
 
-    // T: global indices, ascending, the same on every process.
+    // The ordering and symbolic factorization for the pattern of `matrix`
+    // with the Schur unknowns T (global indices, ascending, the same on
+    // every process); kept until clear().
     void
-    factorize(const TrilinosWrappers::SparseMatrix &matrix,
-              const std::vector<int>               &T);
+    analyse(const TrilinosWrappers::SparseMatrix &matrix,
+            const std::vector<int>               &T);
+    bool
+    analysed() const
+    {
+      return mumps != nullptr;
+    }
+    // The numerical factorization of a matrix of the analysed pattern.
+    void
+    factorize(const TrilinosWrappers::SparseMatrix &matrix);
 
     // Drops the analysis: the next matrix may have another pattern or T.
     void
@@ -58,8 +68,6 @@ namespace viscoslide
     expand(const std::vector<double> &x_T, TrilinosWrappers::MPI::Vector &x);
 
   private:
-    void
-    analyse(const Epetra_CrsMatrix &A, const std::vector<int> &T);
     void
     call(int job, const char *what);
 

@@ -49,6 +49,8 @@ namespace viscoslide
     linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints));
     amg.reset();
     system_matrix.reinit(sp);
+    bulk_matrix.reinit(sp);
+    bulk_dt = -1.;
 
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
@@ -66,14 +68,18 @@ namespace viscoslide
   // Residual -R(u) and, if asked, the consistent tangent dR/du of
   //   R(u)(v) = (sigma(u), eps(v)) + (surface terms of SurfaceCoupling),
   // sigma from the arm stresses of the history advanced over the step
-  // (ViscoelasticSolid::updated_arm_stress, step-18's scheme).
+  // (ViscoelasticSolid::updated_arm_stress, step-18's scheme). The bulk
+  // tangent depends on the time step alone (assemble_bulk()); a Newton
+  // iteration adds the surface terms to a copy of it.
   void
   ContactProblem::assemble(const bool with_matrix)
   {
+    if (with_matrix && bulk_dt != current.dt)
+      assemble_bulk();
     TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
     if (with_matrix)
       {
-        system_matrix = 0;
+        system_matrix.copy_from(bulk_matrix);
         linear_solver.matrix_changed(current.dt);
       }
     system_rhs = 0;
@@ -97,10 +103,8 @@ namespace viscoslide
       history_fe.n_dofs_per_cell());
     std::vector<double>                  history_values;
     std::vector<SymmetricTensor<2, dim>> strain(n_q), old_strain(n_q);
-    std::vector<SymmetricTensor<2, dim>> sym_grad_phi(dofs_per_cell);
 
-    const auto                  factors = material.step_factors(current.dt);
-    const SymmetricTensor<4, 2> C       = material.tangent(factors);
+    const auto factors = material.step_factors(current.dt);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -129,24 +133,16 @@ namespace viscoslide
                 material.stress(strain[q], h);
               const double JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                sym_grad_phi[i] =
-                  fe_values[displacement].symmetric_gradient(i, q);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  cell_rhs(i) -= sigma * sym_grad_phi[i] * JxW;
-                  if (with_matrix)
-                    {
-                      const SymmetricTensor<2, dim> C_phi_i =
-                        C * sym_grad_phi[i];
-                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                        cell_matrix(i, j) += C_phi_i * sym_grad_phi[j] * JxW;
-                    }
-                }
+                cell_rhs(i) -=
+                  sigma * fe_values[displacement].symmetric_gradient(i, q) *
+                  JxW;
             }
 
+          bool at_top = false;
           for (const unsigned int f : cell->face_indices())
             if (is_top_face(cell, f))
               {
+                at_top = true;
                 face_values.reinit(cell, f);
                 coupling.add_face_terms(face_values,
                                         solution,
@@ -164,7 +160,7 @@ namespace viscoslide
                                         cell_rhs,
                                         local_dofs,
                                         constraints,
-                                        with_matrix,
+                                        with_matrix && at_top,
                                         system_matrix,
                                         system_rhs);
         }
@@ -172,6 +168,51 @@ namespace viscoslide
                              with_matrix,
                              system_matrix,
                              system_rhs);
+  }
+
+
+  // The tangent of the bulk, (C eps(du), eps(v)), with C the algorithmic
+  // tangent of the time step.
+  void
+  ContactProblem::assemble_bulk()
+  {
+    TimerOutput::Scope t(timer, "assemble bulk");
+    bulk_matrix = 0;
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    std::vector<types::global_dof_index> local_dofs(n);
+    std::vector<SymmetricTensor<2, dim>> sym_grad_phi(n);
+    const SymmetricTensor<4, 2>          C =
+      material.tangent(material.step_factors(current.dt));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix = 0;
+          fe_values.reinit(cell);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                sym_grad_phi[i] =
+                  fe_values[displacement].symmetric_gradient(i, q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, dim> C_phi_i = C * sym_grad_phi[i];
+                  for (unsigned int j = 0; j < n; ++j)
+                    cell_matrix(i, j) +=
+                      C_phi_i * sym_grad_phi[j] * fe_values.JxW(q);
+                }
+            }
+          cell->get_dof_indices(local_dofs);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 local_dofs,
+                                                 bulk_matrix);
+        }
+    bulk_matrix.compress(VectorOperation::add);
+    bulk_dt = current.dt;
   }
 
 

@@ -1040,7 +1040,9 @@ namespace viscoslide
       prm.declare_entry("Linear solver",
                         "automatic",
                         Patterns::Selection(choice_pattern<LinearSolver>()),
-                        "'direct': MUMPS through Trilinos Amesos. "
+                        "'direct': MUMPS, one factorization per bulk operator, "
+                        "through which every Newton system is solved exactly "
+                        "(doc/model.md, Linear solver). "
                         "'iterative': GMRES with algebraic multigrid (ML). "
                         "'automatic': direct up to Direct solver limit "
                         "unknowns, iterative above.");

@@ -77,6 +77,8 @@ namespace viscoslide
                         const std::vector<int>               &T)
   {
     clear();
+    AssertThrow(!T.empty(),
+                ExcMessage("The direct solver needs surface unknowns"));
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
     mumps                     = std::make_unique<Mumps>();
     auto &id                  = mumps->id;
@@ -127,11 +129,14 @@ namespace viscoslide
     id.schur_lld = static_cast<MUMPS_INT>(T.size());
     call(1, "analysis");
 
-    // Where each process's rows go in the gathered right-hand side.
+    // Where each process's rows go in the gathered right-hand side: deal.II
+    // gives each process one contiguous range.
     const int first = static_cast<int>(A.RowMap().MinMyGID64());
     const int count = A.NumMyRows();
-    counts          = Utilities::MPI::all_gather(comm, count);
-    offsets         = Utilities::MPI::all_gather(comm, count > 0 ? first : 0);
+    AssertThrow(count == 0 || A.RowMap().MaxMyGID64() - first + 1 == count,
+                ExcMessage("The direct solver needs contiguous row ranges"));
+    counts  = Utilities::MPI::all_gather(comm, count);
+    offsets = Utilities::MPI::all_gather(comm, count > 0 ? first : 0);
     gathered.assign(host ? id.n : 1, 0.);
     reduced.assign(T.size(), 0.);
   }
@@ -225,18 +230,14 @@ namespace viscoslide
 
 
   void
-  ReusedFactorization::reinit(const IndexSet &surface_unknowns)
+  ReusedFactorization::reinit(const IndexSet           &surface_unknowns,
+                              std::function<IndexSet()> window)
   {
     direct.clear();
-    factorized = false;
-    surface    = surface_unknowns;
-    std::vector<int> owned;
-    for (const auto i : surface)
-      owned.push_back(static_cast<int>(i));
-    surface_list.clear();
-    for (const auto &part : Utilities::MPI::all_gather(comm, owned))
-      surface_list.insert(surface_list.end(), part.begin(), part.end());
-    std::sort(surface_list.begin(), surface_list.end());
+    factorized    = false;
+    surface       = surface_unknowns;
+    choose_window = std::move(window);
+    window_list.clear();
   }
 
 
@@ -251,57 +252,118 @@ namespace viscoslide
   ReusedFactorization::factorize_if_needed(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    if (factorized && factorized_bulk == assembled_bulk)
-      return;
+    if (!factorized || factorized_bulk != assembled_bulk)
+      factorize(matrix);
+  }
+
+
+  // With the window of the present iterate; a new window needs a new
+  // analysis.
+  void
+  ReusedFactorization::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    std::vector<int> owned;
+    for (const auto i : choose_window())
+      owned.push_back(static_cast<int>(i));
+    std::vector<int> window;
+    for (const auto &part : Utilities::MPI::all_gather(comm, owned))
+      window.insert(window.end(), part.begin(), part.end());
+    std::sort(window.begin(), window.end());
+    if (window != window_list)
+      direct.clear();
+    window_list = std::move(window);
     if (!direct.analysed())
       {
         TimerOutput::Scope t(timer, "linear: analyse");
-        direct.analyse(matrix, surface_list);
+        direct.analyse(matrix, window_list);
       }
     TimerOutput::Scope t(timer, "linear: factorize");
     direct.factorize(matrix);
-    factorized_block = surface_block(matrix, &entries);
+    factorized_block = surface_block(matrix, true);
     factorized       = true;
     factorized_bulk  = assembled_bulk;
     ++factorizations;
   }
 
 
-  // The owned rows of the surface block, in the order of the matrix's
-  // rows.
+  int
+  ReusedFactorization::position(const long long int i) const
+  {
+    const auto p = std::lower_bound(window_list.begin(), window_list.end(), i);
+    return (p != window_list.end() && *p == i) ? p - window_list.begin() : -1;
+  }
+
+
+  // The entries of the owned surface rows, in the order of the matrix's
+  // rows; with `record`, where they go and the rows' diagonals.
   std::vector<double>
   ReusedFactorization::surface_block(
     const TrilinosWrappers::SparseMatrix &matrix,
-    std::vector<Entry>                   *visited) const
+    const bool                            record)
   {
-    const Epetra_CrsMatrix &A        = matrix.trilinos_matrix();
-    const auto              position = [&](const long long int i) {
-      const auto p =
-        std::lower_bound(surface_list.begin(), surface_list.end(), i);
-      return (p != surface_list.end() && *p == i) ? p - surface_list.begin()
-                                                               : -1;
-    };
-    std::vector<double> block;
-    if (visited)
-      visited->clear();
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    std::vector<double>     block;
+    if (record)
+      {
+        entries.clear();
+        diagonal.clear();
+      }
     for (const auto row : surface)
       {
-        const int r = A.LRID(static_cast<long long int>(row));
-        int       n;
-        double   *v;
-        int      *c;
-        A.ExtractMyRowView(r, n, v, c);
-        const auto i = position(row);
+        int     n;
+        double *v;
+        int    *c;
+        A.ExtractMyRowView(A.LRID(static_cast<long long int>(row)), n, v, c);
+        block.insert(block.end(), v, v + n);
+        if (!record)
+          continue;
+        double diagonal_entry = 0.;
         for (int j = 0; j < n; ++j)
-          if (const auto p = position(A.ColMap().GID64(c[j])); p >= 0)
-            {
-              block.push_back(v[j]);
-              if (visited)
-                visited->push_back(
-                  {static_cast<unsigned int>(i), static_cast<unsigned int>(p)});
-            }
+          {
+            const long long int column = A.ColMap().GID64(c[j]);
+            entries.push_back({position(row),
+                               position(column),
+                               static_cast<unsigned int>(diagonal.size())});
+            if (column == static_cast<long long int>(row))
+              diagonal_entry = std::abs(v[j]);
+          }
+        diagonal.push_back(diagonal_entry);
       }
     return block;
+  }
+
+
+  // D = J_TT - A_TT as (row, column, value) and b_T as (row, value), the
+  // owned parts of every process on the host. A change of the matrix
+  // outside T x T above 1e-3 of its row's diagonal (a node that entered
+  // the traction law's stiff range) asks for a new window.
+  ReusedFactorization::SurfaceTerms
+  ReusedFactorization::gather_surface_terms(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const Vector                         *b)
+  {
+    const std::vector<double> block = surface_block(matrix, false);
+    AssertThrow(block.size() == factorized_block.size(),
+                ExcMessage("The matrix changed its pattern without reinit()"));
+    std::vector<double> change, border;
+    int                 outside = 0;
+    for (unsigned int e = 0; e < block.size(); ++e)
+      if (const double c = block[e] - factorized_block[e]; c != 0.)
+        {
+          const Entry &entry = entries[e];
+          if (entry.row >= 0 && entry.column >= 0)
+            change.insert(change.end(),
+                          {double(entry.row), double(entry.column), c});
+          else if (std::abs(c) > 1e-3 * diagonal[entry.surface_row])
+            outside = 1;
+        }
+    if (b)
+      for (const auto i : surface)
+        if (const int p = position(i); p >= 0)
+          border.insert(border.end(), {double(p), (*b)[i]});
+    return {Utilities::MPI::gather(comm, change, 0),
+            Utilities::MPI::gather(comm, border, 0),
+            Utilities::MPI::max(outside, comm) != 0};
   }
 
 
@@ -327,7 +389,8 @@ namespace viscoslide
   }
 
 
-  // On the host: the dense system on T,
+  // The exact solution through the factorization of A: on the host the
+  // dense system on T,
   //   [S + D   b_T] [x_T]   [r_T - A_TI A_II^-1 r_I]
   //   [b_T^T   d  ] [t  ] = [m                     ],
   // D = J_TT - A_TT; then x from x_T by the back-substitution.
@@ -341,38 +404,18 @@ namespace viscoslide
     Vector                               &x)
   {
     factorize_if_needed(matrix);
-    TimerOutput::Scope t(timer, "linear: surface solve");
-    const unsigned int k = surface_list.size();
-    // The owned changes of the surface block and the owned border, as
-    // (row, column, value) and (row, value), for the host.
-    std::vector<double> owned;
-    {
-      const std::vector<double> block = surface_block(matrix, nullptr);
-      AssertThrow(block.size() == factorized_block.size(),
-                  ExcMessage(
-                    "The matrix changed its pattern without reinit()"));
-      for (unsigned int e = 0; e < block.size(); ++e)
-        if (const double change = block[e] - factorized_block[e]; change != 0.)
-          owned.insert(owned.end(),
-                       {double(entries[e].row),
-                        double(entries[e].column),
-                        change});
-    }
-    std::vector<double> border;
-    if (b)
-      for (const auto i : surface)
-        border.insert(border.end(),
-                      {double(std::lower_bound(surface_list.begin(),
-                                               surface_list.end(),
-                                               static_cast<int>(i)) -
-                              surface_list.begin()),
-                       (*b)[i]});
-    const auto changes = Utilities::MPI::gather(comm, owned, 0);
-    const auto borders = Utilities::MPI::gather(comm, border, 0);
-
+    SurfaceTerms terms = gather_surface_terms(matrix, b);
+    if (terms.outside_window)
+      {
+        factorize(matrix);
+        terms = gather_surface_terms(matrix, b);
+      }
+    TimerOutput::Scope        t(timer, "linear: surface solve");
     const std::vector<double> reduced = direct.reduce(r);
-    double                    t_value = 0.;
+    const unsigned int        k       = window_list.size();
     std::vector<double>       x_T(k);
+    double                    t_value  = 0.;
+    int                       singular = 0;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         const unsigned int       n = b ? k + 1 : k;
@@ -381,25 +424,35 @@ namespace viscoslide
         for (unsigned int i = 0; i < k; ++i)
           for (unsigned int j = 0; j < k; ++j)
             K(i, j) = S[i * k + j];
-        for (const auto &part : changes)
+        for (const auto &part : terms.change)
           for (unsigned int e = 0; e < part.size(); e += 3)
             K(part[e], part[e + 1]) += part[e + 2];
         dealii::Vector<double> y(n);
         std::copy(reduced.begin(), reduced.end(), y.begin());
         if (b)
           {
-            for (const auto &part : borders)
+            for (const auto &part : terms.border)
               for (unsigned int e = 0; e < part.size(); e += 2)
                 K(k, part[e]) = K(part[e], k) = part[e + 1];
             K(k, k) = d;
             y(k)    = m;
           }
-        K.compute_lu_factorization();
-        K.solve(y);
+        try
+          {
+            K.compute_lu_factorization();
+            K.solve(y);
+          }
+        catch (const std::exception &)
+          {
+            singular = 1;
+          }
         std::copy(y.begin(), y.begin() + k, x_T.begin());
         if (b)
           t_value = y(k);
       }
+    // Every process learns it, or the others would wait in expand().
+    AssertThrow(Utilities::MPI::max(singular, comm) == 0,
+                ExcMessage("The Newton matrix is singular on the surface"));
     direct.expand(x_T, x);
     ++surface_solves;
     return Utilities::MPI::broadcast(comm, t_value, 0);

@@ -2,6 +2,7 @@
 #include <viscoslide/surface_coupling.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace viscoslide
@@ -276,29 +277,74 @@ namespace viscoslide
   }
 
 
+  template <typename Function>
+  void
+  SurfaceCoupling::for_each_surface_unknown(
+    const DoFHandler<2>             &dof_handler,
+    const AffineConstraints<double> &constraints,
+    const Function                  &f) const
+  {
+    const auto &fe     = dof_handler.get_fe();
+    const auto &points = fe.get_unit_face_support_points();
+    const auto &owned  = dof_handler.locally_owned_dofs();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto f_no : cell->face_indices())
+        {
+          if (!cell->is_locally_owned() || !is_top_face(cell, f_no))
+            continue;
+          const auto face = cell->face(f_no);
+          face->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (fe.face_system_to_component_index(i).first == 1 &&
+                owned.is_element(dofs[i]) &&
+                !constraints.is_constrained(dofs[i]))
+              f(dofs[i],
+                face->vertex(0)[0] +
+                  points[i][0] * (face->vertex(1)[0] - face->vertex(0)[0]));
+        }
+  }
+
+
   IndexSet
   SurfaceCoupling::surface_unknowns(
     const DoFHandler<2>             &dof_handler,
     const AffineConstraints<double> &constraints) const
   {
-    const auto &fe    = dof_handler.get_fe();
-    const auto &owned = dof_handler.locally_owned_dofs();
-    IndexSet    unknowns(dof_handler.n_dofs());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_face());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const auto f : cell->face_indices())
-          if (is_top_face(cell, f))
-            {
-              cell->face(f)->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                if (fe.face_system_to_component_index(i).first == 1 &&
-                    owned.is_element(dofs[i]) &&
-                    !constraints.is_constrained(dofs[i]))
-                  unknowns.add_index(dofs[i]);
-            }
+    IndexSet unknowns(dof_handler.n_dofs());
+    for_each_surface_unknown(dof_handler,
+                             constraints,
+                             [&](const auto dof, double) {
+                               unknowns.add_index(dof);
+                             });
     unknowns.compress();
     return unknowns;
+  }
+
+
+  IndexSet
+  SurfaceCoupling::surface_window(const DoFHandler<2>             &dof_handler,
+                                  const AffineConstraints<double> &constraints,
+                                  const VectorType                &solution,
+                                  const double                     delta,
+                                  const double                     s) const
+  {
+    std::vector<std::pair<types::global_dof_index, double>> gaps;
+    double smallest = std::numeric_limits<double>::max();
+    for_each_surface_unknown(
+      dof_handler, constraints, [&](const auto dof, const double x) {
+        const double g = gap(profile, scales.eps, delta, s, x, solution[dof]);
+        gaps.emplace_back(dof, g);
+        smallest = std::min(smallest, g);
+      });
+    const double limit = std::max(window_gap * scales.eps,
+                                  2. * Utilities::MPI::min(smallest, comm));
+    IndexSet     window(dof_handler.n_dofs());
+    for (const auto &[dof, g] : gaps)
+      if (g < limit)
+        window.add_index(dof);
+    window.compress();
+    return window;
   }
 
 
@@ -333,38 +379,18 @@ namespace viscoslide
     const double                     delta,
     const double                     s) const
   {
-    const auto  &fe     = dof_handler.get_fe();
-    const auto  &points = fe.get_unit_face_support_points();
-    const auto  &owned  = predicted.locally_owned_elements();
-    const double eps    = scales.eps;
+    const double eps = scales.eps;
     // Each node once (it lies on two faces); every process adds, so that
     // all of them compress alike.
     std::map<types::global_dof_index, double> u_y_change;
-    std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_face());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const auto f : cell->face_indices())
-        {
-          if (!cell->is_locally_owned() || !is_top_face(cell, f))
-            continue;
-          const auto face = cell->face(f);
-          face->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            {
-              if (fe.face_system_to_component_index(i).first != 1 ||
-                  !owned.is_element(dofs[i]) ||
-                  constraints.is_constrained(dofs[i]))
-                continue;
-              const double x =
-                face->vertex(0)[0] +
-                points[i][0] * (face->vertex(1)[0] - face->vertex(0)[0]);
-              const double floor = std::min(
-                eps, gap(profile, eps, last_delta, last_s, x, last[dofs[i]]));
-              const double g =
-                gap(profile, eps, delta, s, x, predicted[dofs[i]]);
-              if (g < floor)
-                u_y_change[dofs[i]] = g - floor; // opens the gap to floor
-            }
-        }
+    for_each_surface_unknown(
+      dof_handler, constraints, [&](const auto dof, const double x) {
+        const double floor =
+          std::min(eps, gap(profile, eps, last_delta, last_s, x, last[dof]));
+        const double g = gap(profile, eps, delta, s, x, predicted[dof]);
+        if (g < floor)
+          u_y_change[dof] = g - floor; // opens the gap to floor
+      });
     std::vector<types::global_dof_index> indices;
     std::vector<double>                  values;
     for (const auto &[dof, value] : u_y_change)

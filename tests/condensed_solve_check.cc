@@ -92,7 +92,7 @@ main(int argc, char **argv)
                     TimerOutput::never,
                     TimerOutput::wall_times);
   viscoslide::ReusedFactorization solver(quiet, comm);
-  solver.reinit(T);
+  solver.reinit(T, [&] { return T; });
 
   TrilinosWrappers::MPI::Vector r(owned, comm), b(owned, comm), x(owned, comm),
     y(owned, comm);

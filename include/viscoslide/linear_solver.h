@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -89,26 +90,32 @@ namespace viscoslide
   // At a given mesh the bulk operator is linear and fixed by one number,
   // the speed (steady state) or the time step (transient): between Newton
   // iterations only the surface terms of the Jacobian change, and they act
-  // on the u_y unknowns of the top surface alone (the k surface unknowns T
-  // of SurfaceCoupling::surface_unknowns()). So the first Jacobian A of a
-  // bulk operator is factorized with its Schur complement S on T, and
-  // every later Jacobian J = A + D of that operator, D confined to T x T,
-  // is solved exactly with it: MUMPS's forward elimination reduces the
-  // right-hand side to T, a dense LU of S + D solves on T, and MUMPS's
-  // back-substitution expands the solution. A Newton iteration then costs
-  // one sparse substitution and a k x k dense factorization (k ~ 1000) in
-  // place of a sparse factorization; the solves stay exact, so the results
-  // do not depend on a choice between solvers.
+  // on the u_y unknowns of the top surface alone
+  // (SurfaceCoupling::surface_unknowns()), appreciably only in the window
+  // T of them where the traction law is stiff
+  // (SurfaceCoupling::surface_window(), a few hundred). So the first
+  // Jacobian A of a bulk operator is factorized with its Schur complement S
+  // on T, and every later Jacobian J = A + D of that operator is solved
+  // with it: MUMPS's forward elimination reduces the right-hand side to T,
+  // a dense LU of S + D_TT solves on T, and MUMPS's back-substitution
+  // expands the solution. A Newton iteration then costs one sparse
+  // substitution and a small dense factorization in place of a sparse
+  // factorization. The solve is exact but for the changes of the surface
+  // terms outside T, which are below 1e-3 of the matrix's diagonal (else a
+  // new window is factorized): Newton's method, which judges the residual
+  // itself, is unaffected, and the results do not depend on a choice
+  // between solvers.
   class ReusedFactorization
   {
   public:
     ReusedFactorization(TimerOutput &timer, MPI_Comm comm);
 
-    // After every setup: the locally owned surface unknowns, on whose
-    // block alone two Jacobians of one bulk operator may differ, and on
-    // which the border of solve_bordered() lives. Drops the factorization.
+    // After every setup: the locally owned surface unknowns, on whose rows
+    // alone two Jacobians of one bulk operator may differ and on which the
+    // border of solve_bordered() lives, and the function that picks the
+    // window T among them at the present iterate. Drops the factorization.
     void
-    reinit(const IndexSet &surface_unknowns);
+    reinit(const IndexSet &surface_unknowns, std::function<IndexSet()> window);
 
     // The matrix was assembled anew, for the bulk operator named by
     // `bulk` (the speed or the time step).
@@ -123,7 +130,8 @@ namespace viscoslide
     // The bordered system of force control,
     //   [K   b] [x]   [r]
     //   [b^T d] [t] = [m],
-    // for K = matrix and b zero outside the surface unknowns; returns t.
+    // for K = matrix and b zero outside the surface unknowns (its part
+    // outside T is left out, like the changes of K there); returns t.
     double
     solve_bordered(const TrilinosWrappers::SparseMatrix &matrix,
                    const TrilinosWrappers::MPI::Vector  &b,
@@ -136,18 +144,36 @@ namespace viscoslide
     unsigned int factorizations = 0, surface_solves = 0;
 
   private:
-    // The owned entries of the surface block, in the order surface_block()
-    // visits them: (row, column) positions in T.
+    // An owned entry of a surface row, in the order surface_block() visits
+    // them: its row and column positions in T (-1: outside), and its row's
+    // index among the owned surface rows.
     struct Entry
     {
-      unsigned int row, column;
+      int          row, column;
+      unsigned int surface_row;
+    };
+
+    // On the host, per process: (row, column, value) of D = J_TT - A_TT,
+    // and (row, value) of the border b_T; on every process, whether a
+    // change outside T asks for a new window.
+    struct SurfaceTerms
+    {
+      std::vector<std::vector<double>> change, border;
+      bool                             outside_window = false;
     };
 
     void
     factorize_if_needed(const TrilinosWrappers::SparseMatrix &matrix);
+    void
+    factorize(const TrilinosWrappers::SparseMatrix &matrix);
+    // The position of global index i in T, or -1.
+    int
+    position(long long int i) const;
     std::vector<double>
-    surface_block(const TrilinosWrappers::SparseMatrix &matrix,
-                  std::vector<Entry>                   *entries) const;
+    surface_block(const TrilinosWrappers::SparseMatrix &matrix, bool record);
+    SurfaceTerms
+    gather_surface_terms(const TrilinosWrappers::SparseMatrix &matrix,
+                         const TrilinosWrappers::MPI::Vector  *b);
     double
     solve_condensed(const TrilinosWrappers::SparseMatrix &matrix,
                     const TrilinosWrappers::MPI::Vector  *b,
@@ -159,17 +185,19 @@ namespace viscoslide
     TimerOutput &timer;
     MPI_Comm     comm;
     SparseDirect direct;
-    // The owned surface unknowns, and all of them (ascending).
-    IndexSet         surface;
-    std::vector<int> surface_list;
+    // The owned surface unknowns; the window T (all processes', ascending)
+    // and the function that picks it.
+    IndexSet                  surface;
+    std::vector<int>          window_list;
+    std::function<IndexSet()> choose_window;
     // Whether `direct` holds a factorization of the present bulk operator.
     bool   factorized      = false;
     double factorized_bulk = 0.;
     double assembled_bulk  = 0.;
-    // The owned surface block of the factorized matrix, and where its
-    // entries go.
+    // The owned surface rows of the factorized matrix, where their entries
+    // go, and the magnitude of each row's diagonal.
     std::vector<Entry>  entries;
-    std::vector<double> factorized_block;
+    std::vector<double> factorized_block, diagonal;
   };
 } // namespace viscoslide
 

@@ -246,6 +246,19 @@ namespace viscoslide
     IndexSet
     surface_unknowns(const DoFHandler<2>             &dof_handler,
                      const AffineConstraints<double> &constraints) const;
+    // Those of them where the traction law is stiff at the iterate
+    // (`solution` at delta, s; ghosted): the gap below window_gap, or below
+    // twice the smallest gap before contact. Beyond it the Lennard-Jones
+    // tangent, about 8 dgamma/eps^2 (eps/g)^4, is below 1e-5 of its wall's
+    // (16 dgamma/eps^2) and changes little from one Newton iteration to the
+    // next.
+    IndexSet
+                            surface_window(const DoFHandler<2>             &dof_handler,
+                                           const AffineConstraints<double> &constraints,
+                                           const VectorType                &solution,
+                                           double                           delta,
+                                           double                           s) const;
+    static constexpr double window_gap = 20.; // in eps
 
     // --- the mesh
 
@@ -270,6 +283,13 @@ namespace viscoslide
   private:
     NewtonProblem
     newton_problem(const System &system);
+    // Calls f(dof, x) for the locally owned, unconstrained u_y unknowns of
+    // the top surface, x their abscissa; a node shared by two faces twice.
+    template <typename Function>
+    void
+    for_each_surface_unknown(const DoFHandler<2>             &dof_handler,
+                             const AffineConstraints<double> &constraints,
+                             const Function                  &f) const;
 
     const Parameters::AllParameters &prm;
     const Scales                    &scales;

@@ -115,7 +115,11 @@ namespace viscoslide
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
-    linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints));
+    linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints),
+                         [this] {
+                           return coupling.surface_window(
+                             dof_handler, constraints, solution, delta, s);
+                         });
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,

@@ -246,6 +246,8 @@ namespace viscoslide
     IndexSet
     surface_unknowns(const DoFHandler<2>             &dof_handler,
                      const AffineConstraints<double> &constraints) const;
+    // The gap, in eps, that bounds surface_window().
+    static constexpr double window_gap = 20.;
     // Those of them where the traction law is stiff at the iterate
     // (`solution` at delta, s; ghosted): the gap below window_gap, or below
     // twice the smallest gap before contact. Beyond it the Lennard-Jones
@@ -253,12 +255,11 @@ namespace viscoslide
     // (16 dgamma/eps^2) and changes little from one Newton iteration to the
     // next.
     IndexSet
-                            surface_window(const DoFHandler<2>             &dof_handler,
-                                           const AffineConstraints<double> &constraints,
-                                           const VectorType                &solution,
-                                           double                           delta,
-                                           double                           s) const;
-    static constexpr double window_gap = 20.; // in eps
+    surface_window(const DoFHandler<2>             &dof_handler,
+                   const AffineConstraints<double> &constraints,
+                   const VectorType                &solution,
+                   double                           delta,
+                   double                           s) const;
 
     // --- the mesh
 

@@ -43,32 +43,55 @@ namespace viscoslide
     const std::vector<std::pair<double, double>> whole_surface{{-W / 2, W / 2}};
     const int                                    max_level = static_cast<int>(
       std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
+    // The refinement level a cell at distance d from the edges needs.
+    const auto level_at = [&](const double d) {
+      const double h = std::max(prm.mesh.finest_cell, prm.mesh.grading * d);
+      return std::clamp(static_cast<int>(
+                          std::ceil(std::log2(coarse_width / h) - 1e-9)),
+                        0,
+                        max_level);
+    };
 
+    bool must_change = false;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto box = cell->bounding_box();
-          double     d   = std::numeric_limits<double>::max();
+          // The distance to the nearest edge, and to the nearest edge
+          // widened by the margin along the surface.
+          const auto   box = cell->bounding_box();
+          const double dy  = std::max(0., -box.upper_bound(1));
+          double       d = std::numeric_limits<double>::max(), d_wide = d;
           for (const auto &[a, b] :
                prm.mesh.uniform_surface ? whole_surface : edges)
             {
               const double dx =
                 std::max({0., a - box.upper_bound(0), box.lower_bound(0) - b});
-              const double dy = std::max(0., -box.upper_bound(1));
-              d               = std::min(d, std::hypot(dx, dy));
+              d = std::min(d, std::hypot(dx, dy));
+              d_wide =
+                std::min(d_wide,
+                         std::hypot(std::max(0., dx - prm.mesh.edge_margin),
+                                    dy));
             }
-          const double h_desired =
-            std::max(prm.mesh.finest_cell, prm.mesh.grading * d);
-          const int level =
-            std::clamp(static_cast<int>(
-                         std::ceil(std::log2(coarse_width / h_desired) - 1e-9)),
-                       0,
-                       max_level);
-          if (cell->level() < level)
+          const int needed = level_at(d);
+          const int wanted = level_at(d_wide);
+          if (cell->level() < needed)
+            must_change = true;
+          if (cell->level() < wanted)
             cell->set_refine_flag();
-          else if (cell->level() > level + 1)
+          else if (cell->level() > wanted + 1)
             cell->set_coarsen_flag();
         }
+    if (Utilities::MPI::max(must_change ? 1 : 0,
+                            triangulation.get_communicator()) == 0)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->clear_refine_flag();
+              cell->clear_coarsen_flag();
+            }
+        return false;
+      }
     triangulation.prepare_coarsening_and_refinement();
     bool changes = false;
     for (const auto &cell : triangulation.active_cell_iterators())

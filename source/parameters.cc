@@ -764,6 +764,16 @@ namespace viscoslide
                         "2.5",
                         Patterns::Double(),
                         "See Edge gap lower.");
+      prm.declare_entry(
+        "Edge margin",
+        "8",
+        Patterns::Double(0),
+        "Distance (in eps) by which a contact edge may move before the "
+        "mesh is adapted again: the mesh is refined as if each edge were "
+        "this much wider, and changed only where a cell is coarser than "
+        "the edge itself needs. Wider "
+        "margins mean fewer adaptations, each re-solve, factorization "
+        "and transfer saved, for a few more cells.");
       prm.declare_entry("Adaptation cycles per step",
                         "3",
                         Patterns::Integer(0),
@@ -787,6 +797,7 @@ namespace viscoslide
       grading               = prm.get_double("Mesh grading");
       edge_gap_low          = prm.get_double("Edge gap lower");
       edge_gap_high         = prm.get_double("Edge gap upper");
+      edge_margin           = prm.get_double("Edge margin");
       max_adaptation_cycles = prm.get_integer("Adaptation cycles per step");
       uniform_surface       = prm.get_bool("Uniform surface");
       prm.leave_subsection();

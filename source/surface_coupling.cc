@@ -329,6 +329,11 @@ namespace viscoslide
                                   const double                     delta,
                                   const double                     s) const
   {
+    // The relaxation's dashpot acts on every surface row and changes at
+    // every pseudo-step: a window of the whole surface keeps one
+    // factorization for all of them.
+    if (surface_damping > 0)
+      return surface_unknowns(dof_handler, constraints);
     std::vector<std::pair<types::global_dof_index, double>> gaps;
     double smallest = std::numeric_limits<double>::max();
     for_each_surface_unknown(
@@ -348,13 +353,11 @@ namespace viscoslide
   }
 
 
-  bool
-  SurfaceCoupling::flag_contact_edges(
-    parallel::distributed::Triangulation<2> &triangulation,
-    const DoFHandler<2>                     &dof_handler,
-    const VectorType                        &solution,
-    const double                             delta,
-    const double                             s) const
+  std::vector<std::pair<double, double>>
+  SurfaceCoupling::contact_edges(const DoFHandler<2> &dof_handler,
+                                 const VectorType    &solution,
+                                 const double         delta,
+                                 const double         s) const
   {
     auto edges = postprocessor.faces_in_gap_band(dof_handler,
                                                  solution,
@@ -362,8 +365,23 @@ namespace viscoslide
                                                  s,
                                                  prm.mesh.edge_gap_low,
                                                  prm.mesh.edge_gap_high);
-    if (edges.empty()) // no contact yet: resolve the region under the apex
+    if (edges.empty())
       edges.emplace_back(s, s);
+    return edges;
+  }
+
+
+  bool
+  SurfaceCoupling::flag_contact_edges(
+    parallel::distributed::Triangulation<2>      &triangulation,
+    const DoFHandler<2>                          &dof_handler,
+    const VectorType                             &solution,
+    const double                                  delta,
+    const double                                  s,
+    const std::vector<std::pair<double, double>> &expected) const
+  {
+    auto edges = contact_edges(dof_handler, solution, delta, s);
+    edges.insert(edges.end(), expected.begin(), expected.end());
     return flag_cells_near_edges(triangulation, edges, prm);
   }
 

@@ -38,11 +38,13 @@ namespace viscoslide
 
   // Flags cells for refinement and coarsening so that the cell size is the
   // finest surface cell at the contact edges (x-intervals on the surface)
-  // and grows as Mesh grading x distance away from them. Cells are refined
-  // below their desired level and coarsened only two levels above it, so
-  // that a moving edge does not make the mesh flicker. With Mesh/Uniform
-  // surface the whole top counts as an edge. Returns whether any
-  // cell on any process will change.
+  // and grows as Mesh grading x distance away from them. The mesh changes
+  // only where a cell is coarser than the edges need; it is then refined as
+  // if each edge were Mesh/Edge margin wider, and coarsened where cells are
+  // two levels finer than that, so that an edge moving by less than the
+  // margin leaves the mesh as it is. With Mesh/Uniform
+  // surface the whole top counts as an edge. Returns whether any cell on
+  // any process will change.
   bool
   flag_cells_near_edges(parallel::distributed::Triangulation<2> &triangulation,
                         const std::vector<std::pair<double, double>> &edges,

@@ -206,6 +206,7 @@ namespace viscoslide
       double       grading;
       double       edge_gap_low;
       double       edge_gap_high;
+      double       edge_margin; // in eps
       unsigned int max_adaptation_cycles;
       bool         uniform_surface;
 

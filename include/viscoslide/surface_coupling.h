@@ -253,7 +253,7 @@ namespace viscoslide
     // twice the smallest gap before contact. Beyond it the Lennard-Jones
     // tangent, about 8 dgamma/eps^2 (eps/g)^4, is below 1e-5 of its wall's
     // (16 dgamma/eps^2) and changes little from one Newton iteration to the
-    // next.
+    // next. While relax() runs, all of them: its dashpot acts everywhere.
     IndexSet
     surface_window(const DoFHandler<2>             &dof_handler,
                    const AffineConstraints<double> &constraints,
@@ -263,15 +263,25 @@ namespace viscoslide
 
     // --- the mesh
 
-    // Flags the cells at the contact edges (the top faces whose gap lies
-    // in the Mesh edge band; the region under the apex before contact) for
+    // The contact edges: the x-intervals of the top faces whose gap lies in
+    // the Mesh edge band, on every process; before contact the point under
+    // the apex.
+    std::vector<std::pair<double, double>>
+    contact_edges(const DoFHandler<2> &dof_handler,
+                  const VectorType    &solution,
+                  double               delta,
+                  double               s) const;
+    // Flags the cells at the contact edges, and at the intervals
+    // `expected` where a solver expects them next, for
     // flag_cells_near_edges(). Returns whether the mesh will change.
     bool
-    flag_contact_edges(parallel::distributed::Triangulation<2> &triangulation,
-                       const DoFHandler<2>                     &dof_handler,
-                       const VectorType                        &solution,
-                       double                                   delta,
-                       double                                   s) const;
+    flag_contact_edges(
+      parallel::distributed::Triangulation<2>      &triangulation,
+      const DoFHandler<2>                          &dof_handler,
+      const VectorType                             &solution,
+      double                                        delta,
+      double                                        s,
+      const std::vector<std::pair<double, double>> &expected = {}) const;
 
     // The control's state, for a checkpoint.
     template <class Archive>

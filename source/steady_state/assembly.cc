@@ -384,11 +384,9 @@ namespace viscoslide
     AssemblyScratch                             &scratch,
     AssemblyCopy                                &copy) const
   {
-    // Only the rows of a locally owned cell; and beta is horizontal, so a
-    // horizontal face carries no flux (checked before the costly reinit).
-    const Tensor<1, dim> along =
-      cell->face(face_no)->vertex(1) - cell->face(face_no)->vertex(0);
-    if (!cell->is_locally_owned() || std::abs(along[0]) > std::abs(along[1]))
+    // Only the rows of a locally owned cell (checked before the costly
+    // reinit).
+    if (!cell->is_locally_owned() || !carries_flux(cell, face_no))
       return;
     FEInterfaceValues<dim> &fe_iv = scratch.interface_values;
     fe_iv.reinit(cell,

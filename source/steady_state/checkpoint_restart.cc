@@ -4,6 +4,7 @@
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <viscoslide/checkpoint.h>
 #include <viscoslide/mesh.h>
@@ -17,7 +18,7 @@ namespace viscoslide
   {
     // Distinct from the transient's, so that neither solver reads the
     // other's checkpoint; raised whenever the scalars change.
-    constexpr unsigned int steady_checkpoint_version = 101;
+    constexpr unsigned int steady_checkpoint_version = 102;
   } // namespace
 
 
@@ -39,7 +40,7 @@ namespace viscoslide
                    spring                   = coupling.spring_reference();
       archive << steady_checkpoint_version << station.next_station
               << station.continuation_rows << station.table_rows << V_hat
-              << delta << s << force << spring;
+              << delta << s << force << spring << edge_spans;
     }
     Checkpoint::commit(directory, out.str(), mpi_communicator);
   }
@@ -64,7 +65,8 @@ namespace viscoslide
             "checkpoint '" + dir +
             "' was not written by this version's steady-state solver");
         archive >> station.next_station >> station.continuation_rows >>
-          station.table_rows >> V_hat >> delta >> s >> force >> spring;
+          station.table_rows >> V_hat >> delta >> s >> force >> spring >>
+          edge_spans;
       }
     catch (const boost::archive::archive_exception &)
       {

@@ -89,18 +89,23 @@ namespace viscoslide
       fe.component_mask(FEValuesExtractors::Vector(0)));
     constraints.close();
 
-    // Everything couples inside a cell; across faces only the upwind flux
-    // of each viscous-strain component.
+    // Inside a cell the displacement couples to everything, a viscous-strain
+    // component to itself; across the vertical faces only the upwind flux
+    // of each viscous-strain component. The pattern holds no more: MUMPS
+    // orders the unknowns by it, and the couplings that are always zero
+    // (those across horizontal faces in particular) made its factors three
+    // times larger and its factorization nine times costlier.
     const unsigned int           n_c = fe.n_components();
     Table<2, DoFTools::Coupling> cell_coupling(n_c, n_c),
       face_coupling(n_c, n_c);
     for (unsigned int c = 0; c < n_c; ++c)
       for (unsigned int d = 0; d < n_c; ++d)
         {
-          cell_coupling(c, d) = DoFTools::always;
-          face_coupling(c, d) = (c == d && c >= first_component)
-                                  ? DoFTools::always
-                                  : DoFTools::none;
+          const bool strain_pair = c >= first_component && d >= first_component;
+          cell_coupling(c, d) =
+            (!strain_pair || c == d) ? DoFTools::always : DoFTools::none;
+          face_coupling(c, d) =
+            (strain_pair && c == d) ? DoFTools::always : DoFTools::none;
         }
     DynamicSparsityPattern dsp(locally_relevant_dofs);
     DoFTools::make_flux_sparsity_pattern(
@@ -110,7 +115,10 @@ namespace viscoslide
       false,
       cell_coupling,
       face_coupling,
-      dealii::Utilities::MPI::this_mpi_process(mpi_communicator));
+      dealii::Utilities::MPI::this_mpi_process(mpi_communicator),
+      [](const auto &cell, const unsigned int f) {
+        return carries_flux(cell, f);
+      });
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                mpi_communicator,
@@ -255,11 +263,12 @@ namespace viscoslide
 
 
   bool
-  SteadyStateSolver::adapt_mesh()
+  SteadyStateSolver::adapt_mesh(
+    const std::vector<std::pair<double, double>> &expected)
   {
     TimerOutput::Scope t(timer, "steady: adapt mesh");
     if (!coupling.flag_contact_edges(
-          triangulation, dof_handler, solution, delta, s))
+          triangulation, dof_handler, solution, delta, s, expected))
       return false;
 
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
@@ -272,6 +281,57 @@ namespace viscoslide
     constraints.distribute(x);
     solution = x;
     return true;
+  }
+
+
+  void
+  SteadyStateSolver::record_edges()
+  {
+    const auto edges  = coupling.contact_edges(dof_handler, solution, delta, s);
+    double     lowest = edges[0].first, highest = edges[0].second;
+    for (const auto &[a, b] : edges)
+      {
+        lowest  = std::min(lowest, a);
+        highest = std::max(highest, b);
+      }
+    const double middle = 0.5 * (lowest + highest);
+    EdgeSpan     span{std::log(V_hat), {highest, lowest, highest, lowest}};
+    for (const auto &[a, b] : edges)
+      {
+        const unsigned int side = a + b < 2 * middle ? 0 : 2;
+        span.ends[side]         = std::min(span.ends[side], a);
+        span.ends[side + 1]     = std::max(span.ends[side + 1], b);
+      }
+    edge_spans.push_back(span);
+    if (edge_spans.size() > 2)
+      edge_spans.erase(edge_spans.begin());
+  }
+
+
+  std::vector<std::pair<double, double>>
+  SteadyStateSolver::expected_edges(const double next) const
+  {
+    if (edge_spans.size() < 2 ||
+        edge_spans[1].log_speed == edge_spans[0].log_speed)
+      return {};
+    const EdgeSpan &last = edge_spans[1], &before = edge_spans[0];
+    // Twice the extrapolated move, in the ratio of the step in log V_hat to
+    // the last one: the edges found on the coarser cells ahead of them
+    // move by more than the converged ones did, and an overshoot costs
+    // only cells (measured on the Fig. 9b curve: 40 factorizations against
+    // 45 with the plain extrapolation, 58 with none).
+    const double ratio = 2. * std::clamp((std::log(next) - last.log_speed) /
+                                           (last.log_speed - before.log_speed),
+                                         0.,
+                                         2.);
+    std::array<double, 4> ahead;
+    for (unsigned int i = 0; i < 4; ++i)
+      ahead[i] = last.ends[i] + ratio * (last.ends[i] - before.ends[i]);
+    std::vector<std::pair<double, double>> expected;
+    for (const unsigned int side : {0, 2})
+      expected.emplace_back(std::min(last.ends[side], ahead[side]),
+                            std::max(last.ends[side + 1], ahead[side + 1]));
+    return expected;
   }
 
 
@@ -360,6 +420,7 @@ namespace viscoslide
         else
           next = std::max(target, V_hat * std::exp(-step));
 
+        adapt_mesh(expected_edges(next));
         const TrilinosWrappers::MPI::Vector backup(solution);
         const double                        delta0 = delta, V0 = V_hat;
         V_hat         = next;
@@ -383,6 +444,7 @@ namespace viscoslide
               }
             continue;
           }
+        record_edges();
         on_converged();
         step = std::min(largest_step, 2. * step);
       }
@@ -398,6 +460,7 @@ namespace viscoslide
   SteadyStateSolver::continue_to_load(const double                 target,
                                       const std::function<void()> &on_converged)
   {
+    edge_spans.clear(); // they follow the speed
     const bool   force      = coupling.force_control();
     double      &controlled = force ? coupling.held_force() : delta;
     const double unit       = force ? scales.force : scales.eps;

@@ -45,6 +45,7 @@
 #include <viscoslide/steady_state_table.h>
 #include <viscoslide/surface_coupling.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 
@@ -150,6 +151,17 @@ namespace viscoslide
     write_fields(OutputWriter &writer, unsigned int counter) const override;
 
   private:
+    // Whether face f of `cell` carries a viscous-strain flux: beta is
+    // horizontal, so the vertical faces alone.
+    static bool
+    carries_flux(const DoFHandler<dim>::active_cell_iterator &cell,
+                 const unsigned int                           f)
+    {
+      const Tensor<1, dim> along =
+        cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
+      return std::abs(along[1]) > std::abs(along[0]);
+    }
+
     // [solver.cc]
     void
     setup_system();
@@ -197,8 +209,21 @@ namespace viscoslide
     solve_newton_or_relax();
     int
     solve_step(const std::string &what);
+    // Adapts the mesh to the contact edges of the solution and to the
+    // intervals `expected` (see expected_edges()); whether it changed.
     bool
-    adapt_mesh();
+    adapt_mesh(const std::vector<std::pair<double, double>> &expected = {});
+    // Where the contact edges are expected at speed `next`: the sweep of
+    // each edge from its extent at the present speed to its extrapolation
+    // in log V_hat from the last two speeds (none before two are known).
+    // Refined ahead of the solve, this region spares the re-solves on
+    // adapted meshes that an edge moving out of its fine cells costs.
+    std::vector<std::pair<double, double>>
+    expected_edges(double next) const;
+    // Records the extent of the contact edges at the converged present
+    // speed.
+    void
+    record_edges();
     void
     update_quantities();
 
@@ -235,6 +260,23 @@ namespace viscoslide
     double V_hat = 0.;
     double delta = 0.;
     double s     = 0.;
+
+    // The extent of the two contact edges (the ends of the faces in the
+    // edge band left and right of their middle) at the last two converged
+    // speeds (kept by checkpoints).
+    struct EdgeSpan
+    {
+      double                log_speed;
+      std::array<double, 4> ends; // left edge's two, right edge's two
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &log_speed &ends;
+      }
+    };
+    std::vector<EdgeSpan> edge_spans;
 
     SurfaceQuantities last_quantities{};
     unsigned int      last_newton_iterations = 0;

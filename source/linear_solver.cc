@@ -236,6 +236,7 @@ namespace viscoslide
     direct.clear();
     factorized    = false;
     surface       = surface_unknowns;
+    surface_size  = Utilities::MPI::sum(surface.n_elements(), comm);
     choose_window = std::move(window);
     window_list.clear();
   }
@@ -252,7 +253,14 @@ namespace viscoslide
   ReusedFactorization::factorize_if_needed(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    if (!factorized || factorized_bulk != assembled_bulk)
+    // A window of the whole surface (the relaxation's) is given up once a
+    // smaller one serves: its dense system would slow every later solve.
+    const auto window_shrinks = [this] {
+      return window_list.size() == surface_size &&
+             Utilities::MPI::sum(choose_window().n_elements(), comm) <
+               surface_size;
+    };
+    if (!factorized || factorized_bulk != assembled_bulk || window_shrinks())
       factorize(matrix);
   }
 

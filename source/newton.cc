@@ -140,7 +140,11 @@ namespace viscoslide
         if (verbose)
           out << "      relaxation " << k << ": residual " << r << ", dashpot "
               << c << std::endl;
-        if (!std::isfinite(r) || !std::isfinite(moved))
+        // A step that raises the residual a hundredfold has pressed nodes
+        // deep into the traction law's wall: taken, it lets the dashpot
+        // soften on the small moves that follow, and the iteration can
+        // cycle between such snaps without end. It is taken again, stiffer.
+        if (!std::isfinite(r) || !std::isfinite(moved) || r > 100. * residual)
           {
             p.step(0.);
             c *= 4.;

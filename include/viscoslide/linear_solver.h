@@ -188,6 +188,7 @@ namespace viscoslide
     // The owned surface unknowns; the window T (all processes', ascending)
     // and the function that picks it.
     IndexSet                  surface;
+    std::size_t               surface_size = 0; // on all processes
     std::vector<int>          window_list;
     std::function<IndexSet()> choose_window;
     // Whether `direct` holds a factorization of the present bulk operator.

@@ -295,7 +295,7 @@ namespace viscoslide
         highest = std::max(highest, b);
       }
     const double middle = 0.5 * (lowest + highest);
-    EdgeSpan     span{std::log(V_hat), {highest, lowest, highest, lowest}};
+    EdgeSpan     span{std::log(V_hat), {{highest, lowest, highest, lowest}}};
     for (const auto &[a, b] : edges)
       {
         const unsigned int side = a + b < 2 * middle ? 0 : 2;

@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/linear_solver.h>
+#include <viscoslide/mpi_gather.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
@@ -273,9 +274,7 @@ namespace viscoslide
     std::vector<int> owned;
     for (const auto i : choose_window())
       owned.push_back(static_cast<int>(i));
-    std::vector<int> window;
-    for (const auto &part : Utilities::MPI::all_gather(comm, owned))
-      window.insert(window.end(), part.begin(), part.end());
+    std::vector<int> window = gather_concatenated(comm, owned, -1);
     std::sort(window.begin(), window.end());
     if (window != window_list)
       direct.clear();
@@ -369,8 +368,8 @@ namespace viscoslide
       for (const auto i : surface)
         if (const int p = position(i); p >= 0)
           border.insert(border.end(), {double(p), (*b)[i]});
-    return {Utilities::MPI::gather(comm, change, 0),
-            Utilities::MPI::gather(comm, border, 0),
+    return {gather_concatenated(comm, change, 0),
+            gather_concatenated(comm, border, 0),
             Utilities::MPI::max(outside, comm) != 0};
   }
 
@@ -432,16 +431,16 @@ namespace viscoslide
         for (unsigned int i = 0; i < k; ++i)
           for (unsigned int j = 0; j < k; ++j)
             K(i, j) = S[i * k + j];
-        for (const auto &part : terms.change)
-          for (unsigned int e = 0; e < part.size(); e += 3)
-            K(part[e], part[e + 1]) += part[e + 2];
+        const auto &change = terms.change;
+        for (unsigned int e = 0; e < change.size(); e += 3)
+          K(change[e], change[e + 1]) += change[e + 2];
         dealii::Vector<double> y(n);
         std::copy(reduced.begin(), reduced.end(), y.begin());
         if (b)
           {
-            for (const auto &part : terms.border)
-              for (unsigned int e = 0; e < part.size(); e += 2)
-                K(k, part[e]) = K(part[e], k) = part[e + 1];
+            const auto &border = terms.border;
+            for (unsigned int e = 0; e < border.size(); e += 2)
+              K(k, border[e]) = K(border[e], k) = border[e + 1];
             K(k, k) = d;
             y(k)    = m;
           }

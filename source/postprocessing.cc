@@ -2,6 +2,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <viscoslide/mpi_gather.h>
 #include <viscoslide/output.h>
 #include <viscoslide/postprocessing.h>
 
@@ -180,11 +181,8 @@ namespace viscoslide
           points.push_back({x[q], g[q], -law.traction(g[q]), u_y[q]});
       });
 
-    const auto gathered =
-      Utilities::MPI::gather(dofs.get_communicator(), points, 0);
-    std::vector<ProfilePoint> all;
-    for (const auto &part : gathered)
-      all.insert(all.end(), part.begin(), part.end());
+    std::vector<ProfilePoint> all =
+      gather_concatenated(dofs.get_communicator(), points, 0);
     std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
       return a.x < b.x;
     });
@@ -226,11 +224,7 @@ namespace viscoslide
                                 std::minmax(cell->face(face)->vertex(0)[0],
                                             cell->face(face)->vertex(1)[0]));
                           });
-    std::vector<std::pair<double, double>> all;
-    for (const auto &part :
-         Utilities::MPI::all_gather(dofs.get_communicator(), intervals))
-      all.insert(all.end(), part.begin(), part.end());
-    return all;
+    return gather_concatenated(dofs.get_communicator(), intervals, -1);
   }
 
 

@@ -158,8 +158,8 @@ namespace viscoslide
     // change outside T asks for a new window.
     struct SurfaceTerms
     {
-      std::vector<std::vector<double>> change, border;
-      bool                             outside_window = false;
+      std::vector<double> change, border;
+      bool                outside_window = false;
     };
 
     void

@@ -40,14 +40,6 @@ namespace viscoslide
   struct ProfilePoint
   {
     double x, gap, pressure, u_y;
-
-    // for Utilities::MPI::gather
-    template <class Archive>
-    void
-    serialize(Archive &ar, const unsigned int)
-    {
-      ar &x &gap &pressure &u_y;
-    }
   };
 
   class SurfacePostprocessor

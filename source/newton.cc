@@ -128,6 +128,23 @@ namespace viscoslide
       {
         if (residual <= p.tolerance())
           return k;
+        // Once the dashpot has softened this far the pseudo-steps are
+        // Newton's steps, and without a line search they can cycle about
+        // the equilibrium (seen between two states of an edge node):
+        // Newton's method with its line search finishes, or, failing, hands
+        // back to a dashpot that acts again.
+        if (c < 1e-4 * c0)
+          {
+            const int its =
+              newton(p, std::min(20u, max_steps - k), true, verbose, out);
+            if (its >= 0)
+              return k + its;
+            c = 1e-2 * c0;
+            p.assemble(false);
+            residual = p.residual_norm();
+            if (!std::isfinite(residual))
+              return -1;
+          }
         p.set_dashpot(c); // anchored here: the dashpot force vanishes at u
         p.assemble(true);
         p.compute_update();
@@ -140,11 +157,7 @@ namespace viscoslide
         if (verbose)
           out << "      relaxation " << k << ": residual " << r << ", dashpot "
               << c << std::endl;
-        // A step that raises the residual a hundredfold has pressed nodes
-        // deep into the traction law's wall: taken, it lets the dashpot
-        // soften on the small moves that follow, and the iteration can
-        // cycle between such snaps without end. It is taken again, stiffer.
-        if (!std::isfinite(r) || !std::isfinite(moved) || r > 100. * residual)
+        if (!std::isfinite(r) || !std::isfinite(moved))
           {
             p.step(0.);
             c *= 4.;

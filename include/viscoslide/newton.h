@@ -79,9 +79,8 @@ namespace viscoslide
   // anchored at the present iterate. c starts at c0 and is steered by the
   // motion: steps that move the surface by more than `move` stiffen it,
   // shorter ones soften it, so that the iteration becomes plain Newton as
-  // the equilibrium is reached; a step that raises the residual a
-  // hundredfold is taken again with a stiffer dashpot. Only an undamped
-  // equilibrium is accepted.
+  // the equilibrium is reached, where newton() with its line search
+  // finishes. Only an undamped equilibrium is accepted.
   // Returns the pseudo-steps used, or -1.
   int
   relax(const NewtonProblem &problem,

@@ -17,6 +17,26 @@ namespace viscoslide
 {
   using Vector = TrilinosWrappers::MPI::Vector;
 
+  namespace
+  {
+    // f(local row, local column, value) for every locally owned entry of A,
+    // row by row: the order of MUMPS's coordinate arrays.
+    template <typename Function>
+    void
+    for_each_local_entry(const Epetra_CrsMatrix &A, const Function &f)
+    {
+      for (int r = 0; r < A.NumMyRows(); ++r)
+        {
+          int     n;
+          double *v;
+          int    *c;
+          A.ExtractMyRowView(r, n, v, c);
+          for (int j = 0; j < n; ++j)
+            f(r, c[j], v[j]);
+        }
+    }
+  } // namespace
+
   struct SparseDirect::Mumps
   {
     DMUMPS_STRUC_C id{};
@@ -99,18 +119,10 @@ namespace viscoslide
 
     rows.clear();
     columns.clear();
-    for (int r = 0; r < A.NumMyRows(); ++r)
-      {
-        int     n;
-        double *v;
-        int    *c;
-        A.ExtractMyRowView(r, n, v, c);
-        for (int j = 0; j < n; ++j)
-          {
-            rows.push_back(static_cast<int>(A.RowMap().GID64(r)) + 1);
-            columns.push_back(static_cast<int>(A.ColMap().GID64(c[j])) + 1);
-          }
-      }
+    for_each_local_entry(A, [&](const int r, const int c, double) {
+      rows.push_back(static_cast<int>(A.RowMap().GID64(r)) + 1);
+      columns.push_back(static_cast<int>(A.ColMap().GID64(c)) + 1);
+    });
     values.resize(rows.size());
     id.n            = static_cast<MUMPS_INT>(A.NumGlobalRows64());
     id.nnz_loc      = rows.size();
@@ -148,15 +160,11 @@ namespace viscoslide
   {
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
     std::size_t             k = 0;
-    for (int r = 0; r < A.NumMyRows(); ++r)
-      {
-        int     n;
-        double *v;
-        int    *c;
-        A.ExtractMyRowView(r, n, v, c);
-        for (int j = 0; j < n; ++j)
-          values[k++] = v[j];
-      }
+    for_each_local_entry(A, [&](int, int, const double v) {
+      if (k < values.size())
+        values[k] = v;
+      ++k;
+    });
     AssertThrow(k == values.size(),
                 ExcMessage("The matrix changed its pattern without clear()"));
     // A workspace too small for the pivoting that occurred: more, again.

@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <viscoslide/blas_kernels.h>
 #include <viscoslide/driver.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
@@ -50,6 +51,7 @@ int
 main(int argc, char *argv[])
 {
   using namespace viscoslide;
+  use_native_blas_kernels(argv);
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MPI_Comm                         comm = MPI_COMM_WORLD;
   const bool root = Utilities::MPI::this_mpi_process(comm) == 0;

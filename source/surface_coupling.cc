@@ -331,9 +331,15 @@ namespace viscoslide
   {
     // The relaxation's dashpot acts on every surface row and changes at
     // every pseudo-step: a window of the whole surface keeps one
-    // factorization for all of them.
+    // factorization for all of them, unless the surface is so long (a
+    // thin layer's wide block: thousands of unknowns) that the dense LU on
+    // it costs more than a factorization at every pseudo-step.
     if (surface_damping > 0)
-      return surface_unknowns(dof_handler, constraints);
+      {
+        IndexSet all = surface_unknowns(dof_handler, constraints);
+        if (Utilities::MPI::sum(all.n_elements(), comm) <= whole_window)
+          return all;
+      }
     std::vector<std::pair<types::global_dof_index, double>> gaps;
     double smallest = std::numeric_limits<double>::max();
     for_each_surface_unknown(

@@ -248,12 +248,18 @@ namespace viscoslide
                      const AffineConstraints<double> &constraints) const;
     // The gap, in eps, that bounds surface_window().
     static constexpr double window_gap = 20.;
+    // The most surface unknowns that make the relaxation's window: a dense
+    // LU on 1500 (2.2 GFlop) costs about as much as the sparse
+    // factorization of a Newton matrix at the figures' resolution (1.8
+    // GFlop at 76 000 unknowns).
+    static constexpr std::size_t whole_window = 1500;
     // Those of them where the traction law is stiff at the iterate
     // (`solution` at delta, s; ghosted): the gap below window_gap, or below
     // twice the smallest gap before contact. Beyond it the Lennard-Jones
     // tangent, about 8 dgamma/eps^2 (eps/g)^4, is below 1e-5 of its wall's
     // (16 dgamma/eps^2) and changes little from one Newton iteration to the
-    // next. While relax() runs, all of them: its dashpot acts everywhere.
+    // next. While relax() runs, all of them, up to whole_window of them: its
+    // dashpot acts everywhere.
     IndexSet
     surface_window(const DoFHandler<2>             &dof_handler,
                    const AffineConstraints<double> &constraints,

@@ -12,7 +12,8 @@ namespace viscoslide
   // kernels the CPU runs and executes the program again with `argv`; it
   // returns if OPENBLAS_CORETYPE is set already (the user's choice), if the
   // BLAS is not OpenBLAS or knew the CPU, or if the execution fails. To be
-  // called first in main(), before MPI is initialized.
+  // called first in main(), before MPI is initialized. Under valgrind, set
+  // OPENBLAS_CORETYPE: the program executed again would run outside it.
   void
   use_native_blas_kernels(char *argv[]);
 } // namespace viscoslide

@@ -35,6 +35,95 @@ namespace viscoslide
             f(r, c[j], v[j]);
         }
     }
+
+    struct WindowSolution
+    {
+      dealii::Vector<double> x;
+      double                 t          = 0.;
+      unsigned int           iterations = 0;
+    };
+
+    // Newton's method on the reduced system of T (ReusedFactorization):
+    // K = S + D is its matrix at x_T = 0, y and m the reduced right-hand
+    // side and the border's, start_norm the whole system's residual norm.
+    // Full steps only, as long as each reduces the residual norm: a step
+    // that needs cutting ends the iterations before it, or, if it is the
+    // first, is returned whole. Then the caller's Newton method sees the
+    // steps it would have taken without the model, less the full steps it
+    // would have needed to get there, and its line search and its
+    // judgement of a crawl (a contact edge that must jump) stay its own.
+    WindowSolution
+    newton_on_window(const LAPACKFullMatrix<double> &K,
+                     const std::vector<double>      &y,
+                     const bool                      bordered,
+                     const double                    d,
+                     const double                    m,
+                     const double                    start_norm,
+                     const WindowModel              &model)
+    {
+      const unsigned int k = y.size(), n = bordered ? k + 1 : k;
+      WindowSolution     s;
+      s.x.reinit(k);
+      const WindowTerms at_start = model.terms(s.x, 0.);
+      // The bulk's reduced operator: S less the surface tangent it holds.
+      FullMatrix<double> bulk(k, k);
+      for (unsigned int i = 0; i < k; ++i)
+        for (unsigned int j = 0; j < k; ++j)
+          bulk(i, j) = K(i, j) - at_start.tangent(i, j);
+
+      // The reduced residual (and G's row) at x_T, for W = the terms there.
+      dealii::Vector<double> c(n), bx(k);
+      const auto             residual = [&](const WindowTerms            &W,
+                                const dealii::Vector<double> &x) {
+        bulk.vmult(bx, x);
+        for (unsigned int i = 0; i < k; ++i)
+          c(i) = y[i] - bx(i) + W.rhs(i) - at_start.rhs(i);
+        if (bordered)
+          c(k) = m - (W.force - at_start.force);
+        return c.l2_norm();
+      };
+
+      // The first step is judged against the whole residual, which the
+      // reduction hides (the bulk's part of a speed step, say): after it
+      // the rows outside T hold (up to the surface terms there), and the
+      // reduced residual is the whole one.
+      WindowTerms W    = at_start;
+      double      norm = std::max(residual(W, s.x), start_norm);
+      while (s.iterations < 50 && norm > 1e-2 * model.tolerance)
+        {
+          LAPACKFullMatrix<double> J(n, n);
+          for (unsigned int i = 0; i < k; ++i)
+            for (unsigned int j = 0; j < k; ++j)
+              J(i, j) = bulk(i, j) + W.tangent(i, j);
+          if (bordered)
+            {
+              for (unsigned int i = 0; i < k; ++i)
+                J(k, i) = J(i, k) = W.border(i);
+              J(k, k) = d + W.stiffness - at_start.stiffness;
+            }
+          dealii::Vector<double> step(c);
+          J.compute_lu_factorization();
+          J.solve(step);
+
+          dealii::Vector<double> x(s.x);
+          for (unsigned int i = 0; i < k; ++i)
+            x(i) += step(i);
+          const double t        = s.t + (bordered ? step(k) : 0.);
+          WindowTerms  trial    = model.terms(x, t);
+          const double r        = residual(trial, x);
+          const bool   descends = r < (1. - 1e-4) * norm; // false if NaN
+          if (!descends && s.iterations > 0)
+            break;
+          s.x  = x;
+          s.t  = t;
+          W    = std::move(trial);
+          norm = r;
+          ++s.iterations;
+          if (!descends)
+            break;
+        }
+      return s;
+    }
   } // namespace
 
   struct SparseDirect::Mumps
@@ -240,8 +329,10 @@ namespace viscoslide
 
   void
   ReusedFactorization::reinit(const IndexSet           &surface_unknowns,
-                              std::function<IndexSet()> window)
+                              std::function<IndexSet()> window,
+                              WindowModelBuilder        model)
   {
+    build_model = std::move(model);
     direct.clear();
     factorized    = false;
     surface       = surface_unknowns;
@@ -425,6 +516,9 @@ namespace viscoslide
         factorize(matrix);
         terms = gather_surface_terms(matrix, b);
       }
+    const WindowModel model =
+      build_model ? build_model(window_list) : WindowModel();
+    const double              start_norm = std::hypot(r.l2_norm(), b ? m : 0.);
     TimerOutput::Scope        t(timer, "linear: surface solve");
     const std::vector<double> reduced = direct.reduce(r);
     const unsigned int        k       = window_list.size();
@@ -454,16 +548,27 @@ namespace viscoslide
           }
         try
           {
-            K.compute_lu_factorization();
-            K.solve(y);
+            if (model.terms)
+              {
+                const WindowSolution s = newton_on_window(
+                  K, reduced, b != nullptr, d, m, start_norm, model);
+                std::copy(s.x.begin(), s.x.end(), x_T.begin());
+                t_value = s.t;
+                window_iterations += s.iterations;
+              }
+            else
+              {
+                K.compute_lu_factorization();
+                K.solve(y);
+                std::copy(y.begin(), y.begin() + k, x_T.begin());
+                if (b)
+                  t_value = y(k);
+              }
           }
         catch (const std::exception &)
           {
             singular = 1;
           }
-        std::copy(y.begin(), y.begin() + k, x_T.begin());
-        if (b)
-          t_value = y(k);
       }
     // Every process learns it, or the others would wait in expand().
     AssertThrow(Utilities::MPI::max(singular, comm) == 0,

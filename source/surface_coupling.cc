@@ -1,6 +1,8 @@
 #include <viscoslide/mesh.h>
+#include <viscoslide/mpi_gather.h>
 #include <viscoslide/surface_coupling.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -97,14 +99,9 @@ namespace viscoslide
       face_values[uy].get_function_values(relaxation_anchor, anchor_u_y);
     for (unsigned int q = 0; q < n_q; ++q)
       {
-        const double g         = gap(profile,
-                             scales.eps,
-                             delta,
-                             s,
-                             face_values.quadrature_point(q)[0],
-                             u_y[q]);
-        double       traction  = traction_law.traction(g);
-        const double dp_dg     = traction_law.derivative(g);
+        const auto [p, dp_dg] =
+          law_at(face_values.quadrature_point(q)[0], u_y[q], delta, s);
+        double       traction  = p;
         double       stiffness = dp_dg;
         const double JxW       = face_values.JxW(q);
         local.abs_force += std::abs(traction) * JxW;
@@ -176,6 +173,164 @@ namespace viscoslide
   }
 
 
+  std::pair<double, double>
+  SurfaceCoupling::law_at(const double x,
+                          const double u_y,
+                          const double delta,
+                          const double s) const
+  {
+    const double g = gap(profile, scales.eps, delta, s, x, u_y);
+    return {traction_law.traction(g), traction_law.derivative(g)};
+  }
+
+
+  double
+  SurfaceCoupling::tolerance() const
+  {
+    // One loaded finest cell, so that a contact-free state converges too.
+    const double floor = scales.sigma_max * prm.mesh.finest_cell;
+    return prm.solver.newton_tolerance * (traction_scale + floor);
+  }
+
+
+  void
+  SurfaceCoupling::attach(ReusedFactorization             &solver,
+                          const DoFHandler<2>             &dof_handler,
+                          const AffineConstraints<double> &constraints,
+                          const VectorType                &solution,
+                          const double                    &delta,
+                          const double                    &s) const
+  {
+    solver.reinit(
+      surface_unknowns(dof_handler, constraints),
+      [&, this] {
+        return surface_window(dof_handler, constraints, solution, delta, s);
+      },
+      [&, this](const std::vector<int> &T) {
+        return window_model(dof_handler, constraints, solution, delta, s, T);
+      });
+  }
+
+
+  // Per top face that touches T: its u_y unknowns (global index, position
+  // in T or -1, value) and per quadrature point (x, JxW, the unknowns'
+  // shape values), gathered on the host, where the model evaluates the
+  // face terms of add_face_terms() at moved unknowns.
+  WindowModel
+  SurfaceCoupling::window_model(const DoFHandler<2>             &dof_handler,
+                                const AffineConstraints<double> &constraints,
+                                const VectorType                &solution,
+                                const double                     delta,
+                                const double                     s,
+                                const std::vector<int>          &T) const
+  {
+    WindowModel model;
+    model.tolerance = tolerance();
+    if (surface_damping > 0) // the relaxation's pseudo-steps stay linear
+      return model;
+
+    const auto        &fe  = dof_handler.get_fe();
+    const unsigned int n_q = quadrature.size();
+    FEFaceValues<2>    values(fe, quadrature, face_update_flags());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const auto position = [&T](const types::global_dof_index i) {
+      const auto p = std::lower_bound(T.begin(), T.end(), static_cast<int>(i));
+      return (p != T.end() && *p == static_cast<int>(i)) ? int(p - T.begin())
+                                                         : -1;
+    };
+    std::vector<double> data;
+    int                 constrained = 0, per_face = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        {
+          if (!cell->is_locally_owned() || !is_top_face(cell, f))
+            continue;
+          cell->get_dof_indices(dofs);
+          std::vector<unsigned int> on_face;
+          bool                      touches = false;
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (fe.system_to_component_index(i).first == 1 &&
+                fe.has_support_on_face(i, f))
+              {
+                on_face.push_back(i);
+                touches = touches || position(dofs[i]) >= 0;
+              }
+          if (!touches)
+            continue;
+          values.reinit(cell, f);
+          per_face = on_face.size();
+          for (const unsigned int i : on_face)
+            {
+              constrained |= constraints.is_constrained(dofs[i]);
+              data.insert(data.end(),
+                          {double(position(dofs[i])), solution[dofs[i]]});
+            }
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              data.insert(data.end(),
+                          {values.quadrature_point(q)[0], values.JxW(q)});
+              for (const unsigned int i : on_face)
+                data.push_back(values.shape_value_component(i, q, 1));
+            }
+        }
+    data     = gather_concatenated(comm, data, 0);
+    per_face = Utilities::MPI::max(per_face, comm);
+    if (Utilities::MPI::max(constrained, comm) != 0)
+      return model; // not expected on the top surface; one solve then
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return model;
+
+    const unsigned int k = T.size(), m = per_face;
+    const unsigned int record = 2 * m + n_q * (2 + m);
+    const double       spring = spring_stiffness;
+    model.terms = [this, data, k, m, n_q, record, delta, s, spring](
+                    const dealii::Vector<double> &x_T, const double t) {
+      WindowTerms W;
+      W.rhs.reinit(k);
+      W.tangent.reinit(k, k);
+      W.border.reinit(k);
+      std::vector<int>    p(m);
+      std::vector<double> u(m);
+      for (std::size_t face = 0; face + record <= data.size(); face += record)
+        {
+          const double *r = &data[face];
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              p[j] = static_cast<int>(r[2 * j]);
+              u[j] = r[2 * j + 1] + (p[j] >= 0 ? x_T(p[j]) : 0.);
+            }
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double *point = r + 2 * m + q * (2 + m);
+              const double  JxW   = point[1];
+              const double *phi   = point + 2;
+              double        u_q   = 0.;
+              for (unsigned int j = 0; j < m; ++j)
+                u_q += phi[j] * u[j];
+              const auto [traction, dp_dg] =
+                law_at(point[0], u_q, delta + t, s);
+              W.force -= traction * JxW;
+              W.stiffness += dp_dg * JxW;
+              for (unsigned int i = 0; i < m; ++i)
+                if (p[i] >= 0)
+                  {
+                    W.rhs(p[i]) += traction * phi[i] * JxW;
+                    W.border(p[i]) += dp_dg * phi[i] * JxW;
+                    for (unsigned int j = 0; j < m; ++j)
+                      if (p[j] >= 0)
+                        W.tangent(p[i], p[j]) += dp_dg * phi[i] * phi[j] * JxW;
+                  }
+            }
+        }
+      // G's spring term under spring control.
+      W.force += spring * t;
+      W.stiffness += spring;
+      return W;
+    };
+    return model;
+  }
+
+
   double
   SurfaceCoupling::residual_norm(const VectorType &rhs) const
   {
@@ -224,8 +379,6 @@ namespace viscoslide
   NewtonProblem
   SurfaceCoupling::newton_problem(const System &system)
   {
-    // One loaded finest cell, so that a contact-free state converges too.
-    const double floor = scales.sigma_max * prm.mesh.finest_cell;
     // The line search's start lives here, in the layout of the update.
     u0.reinit(system.update);
     delta0 = system.delta;
@@ -234,9 +387,7 @@ namespace viscoslide
     problem.residual_norm = [this, &system] {
       return residual_norm(system.rhs);
     };
-    problem.tolerance = [this, floor] {
-      return prm.solver.newton_tolerance * (traction_scale + floor);
-    };
+    problem.tolerance      = [this] { return tolerance(); };
     problem.compute_update = system.compute_update;
     return with_iterate(problem,
                         {system.solution,

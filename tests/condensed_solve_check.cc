@@ -4,7 +4,10 @@
 // once with its Schur complement on the top row T; then matrices changed
 // on T x T only, with and without a border on T, solved through that one
 // factorization. Prints, per solve, the relative residual
-// |J x + b t - r| / |r| and |b.x + d t - m| / |m|.
+// |J x + b t - r| / |r| and |b.x + d t - m| / |m|. Then a nonlinear law on
+// T given as a WindowModel, with and without a border: the relative
+// residual of the nonlinear system after one solve, and the dense Newton
+// iterations it took.
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -140,4 +143,67 @@ main(int argc, char **argv)
     }
   if (me == 0)
     std::cout << "factorizations " << solver.factorizations << '\n';
+
+  // A nonlinear surface law on T, F_T = -alpha (x_T + t)^3, and under the
+  // border G = sum alpha (x_i + t)^3 + d t - m: the model's Newton
+  // iterations on T solve the nonlinear system in one call.
+  const double alpha = 5.;
+  const auto   cube  = [alpha](const double v) { return alpha * v * v * v; };
+  const auto   slope = [alpha](const double v) { return 3. * alpha * v * v; };
+  viscoslide::ReusedFactorization nonlinear(quiet, comm);
+  const double                    r_norm = r.l2_norm();
+  for (const bool bordered : {false, true})
+    {
+      nonlinear.reinit(
+        T,
+        [&] { return T; },
+        [&](const std::vector<int> &list) {
+          viscoslide::WindowModel model;
+          model.tolerance = 1e-10 * r_norm;
+          if (me == 0)
+            model.terms = [&, k = list.size()](const Vector<double> &x_T,
+                                               const double          t) {
+              viscoslide::WindowTerms W;
+              W.rhs.reinit(k);
+              W.tangent.reinit(k, k);
+              W.border.reinit(k);
+              for (unsigned int i = 0; i < k; ++i)
+                {
+                  W.rhs(i)        = -cube(x_T(i) + t);
+                  W.tangent(i, i) = W.border(i) = slope(x_T(i) + t);
+                  W.force += cube(x_T(i) + t);
+                  W.stiffness += slope(x_T(i) + t);
+                }
+              W.force += d * t;
+              W.stiffness += d;
+              return W;
+            };
+          return model;
+        });
+      nonlinear.matrix_changed(1.);
+      double t = 0.;
+      if (bordered)
+        t = nonlinear.solve_bordered(A, b, d, r, m, x);
+      else
+        nonlinear.solve(A, r, x);
+      // The residual of the nonlinear system at (x, t).
+      TrilinosWrappers::MPI::Vector residual(owned, comm);
+      A.vmult(residual, x);
+      residual -= r;
+      double G = 0.;
+      for (const auto row : T)
+        {
+          residual(row) += cube(x(row) + t);
+          G += cube(x(row) + t);
+        }
+      residual.compress(VectorOperation::add);
+      G = Utilities::MPI::sum(G, comm) + d * t - m;
+      const double relative =
+        std::max(residual.l2_norm() / r_norm, bordered ? std::abs(G) / m : 0.);
+      if (me == 0)
+        std::cout << (bordered ? "nonlinear_bordered " : "nonlinear_plain ")
+                  << relative << '\n';
+    }
+  if (me == 0)
+    std::cout << "window_iterations " << nonlinear.window_iterations << '\n';
 }

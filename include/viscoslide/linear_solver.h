@@ -7,9 +7,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <functional>
 #include <memory>
@@ -87,6 +89,35 @@ namespace viscoslide
     std::vector<double> reduced;
   };
 
+  // The surface terms on the window T as functions of the unknowns of T
+  // alone, the rest of the system held by the linear bulk: the model on
+  // which ReusedFactorization iterates Newton's method between two sparse
+  // substitutions.
+  struct WindowTerms
+  {
+    dealii::Vector<double> rhs;     // their part of -R on the rows of T
+    FullMatrix<double>     tangent; // -d rhs / d x_T
+    dealii::Vector<double> border;  // b_T = -d rhs / d delta
+    // Their part of G = F_n - target (up to a constant), and dG / d delta.
+    double force = 0., stiffness = 0.;
+  };
+
+  struct WindowModel
+  {
+    // On the host: the terms with the unknowns of T moved by x_T (in the
+    // order of T) and delta by t. Empty where no model serves (the
+    // relaxation's dashpot): one linear solve then.
+    std::function<WindowTerms(const dealii::Vector<double> &x_T, double t)>
+      terms;
+    // The residual norm that Newton's method accepts.
+    double tolerance = 0.;
+  };
+
+  // Collective: the model of the present iterate for the window T (global
+  // indices, ascending).
+  using WindowModelBuilder =
+    std::function<WindowModel(const std::vector<int> &T)>;
+
   // At a given mesh the bulk operator is linear and fixed by one number,
   // the speed (steady state) or the time step (transient): between Newton
   // iterations only the surface terms of the Jacobian change, and they act
@@ -98,13 +129,22 @@ namespace viscoslide
   // on T, and every later Jacobian J = A + D of that operator is solved
   // with it: MUMPS's forward elimination reduces the right-hand side to T,
   // a dense LU of S + D_TT solves on T, and MUMPS's back-substitution
-  // expands the solution. A Newton iteration then costs one sparse
-  // substitution and a small dense factorization in place of a sparse
-  // factorization. The solve is exact but for the changes of the surface
-  // terms outside T, which are below 1e-3 of the matrix's diagonal (else a
-  // new window is factorized): Newton's method, which judges the residual
-  // itself, is unaffected, and the results do not depend on a choice
-  // between solvers.
+  // expands the solution. The solve is exact but for the changes of the
+  // surface terms outside T, which are below 1e-3 of the matrix's diagonal
+  // (else a new window is factorized): Newton's method, which judges the
+  // residual itself, is unaffected, and the results do not depend on a
+  // choice between solvers.
+  //
+  // Given a WindowModel, the dense stage does more than one linear solve:
+  // with the bulk linear, the reduced system on T is
+  //   y - S_b x_T + F_T(x_T, t) - F_T(0, 0) = 0,
+  //   S_b = S - (surface tangent of A on T x T),
+  // exact but for the surface terms outside T, and Newton's method with
+  // a line search solves it (and G = 0 under force control) on the host,
+  // each iteration a dense LU. The sparse substitutions are done once per
+  // call. So the slow iterations where a contact edge moves node by node,
+  // and the nonlinear ones of the traction law's wall, cost dense work on
+  // a few hundred unknowns instead of sparse work on the whole block.
   class ReusedFactorization
   {
   public:
@@ -115,7 +155,9 @@ namespace viscoslide
     // border of solve_bordered() lives, and the function that picks the
     // window T among them at the present iterate. Drops the factorization.
     void
-    reinit(const IndexSet &surface_unknowns, std::function<IndexSet()> window);
+    reinit(const IndexSet           &surface_unknowns,
+           std::function<IndexSet()> window,
+           WindowModelBuilder        model = {});
 
     // The matrix was assembled anew, for the bulk operator named by
     // `bulk` (the speed or the time step).
@@ -141,7 +183,7 @@ namespace viscoslide
                    TrilinosWrappers::MPI::Vector        &x);
 
     // Counters for the log and the benchmarks.
-    unsigned int factorizations = 0, surface_solves = 0;
+    unsigned int factorizations = 0, surface_solves = 0, window_iterations = 0;
 
   private:
     // An owned entry of a surface row, in the order surface_block() visits
@@ -191,6 +233,7 @@ namespace viscoslide
     std::size_t               surface_size = 0; // on all processes
     std::vector<int>          window_list;
     std::function<IndexSet()> choose_window;
+    WindowModelBuilder        build_model;
     // Whether `direct` holds a factorization of the present bulk operator.
     bool   factorized      = false;
     double factorized_bulk = 0.;

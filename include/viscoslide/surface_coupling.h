@@ -239,6 +239,29 @@ namespace viscoslide
                             double                           delta,
                             double                           s) const;
 
+    // Points `solver` at the surface of a solver's iterate, whose
+    // references it keeps: the unknowns of surface_unknowns(), the window
+    // of surface_window() and the model of window_model().
+    void
+    attach(ReusedFactorization             &solver,
+           const DoFHandler<2>             &dof_handler,
+           const AffineConstraints<double> &constraints,
+           const VectorType                &solution,
+           const double                    &delta,
+           const double                    &s) const;
+
+    // Collective: the face terms of add_face_terms() on the rows of the
+    // window T (global indices, ascending) as functions of the unknowns of
+    // T and of delta, for ReusedFactorization's Newton iterations on T
+    // (the unknowns outside T held). Without terms during relax().
+    WindowModel
+    window_model(const DoFHandler<2>             &dof_handler,
+                 const AffineConstraints<double> &constraints,
+                 const VectorType                &solution,
+                 double                           delta,
+                 double                           s,
+                 const std::vector<int>          &T) const;
+
     // The locally owned unknowns the face terms act on: u_y (component 1
     // of the element of `dof_handler`) on the top surface, less the
     // constrained ones. Two Jacobians that differ in their surface terms
@@ -300,6 +323,12 @@ namespace viscoslide
   private:
     NewtonProblem
     newton_problem(const System &system);
+    // The traction p(g) and dp/dg at a surface point at x displaced by u_y.
+    std::pair<double, double>
+    law_at(double x, double u_y, double delta, double s) const;
+    // The residual norm Newton's method accepts.
+    double
+    tolerance() const;
     // Calls f(dof, x) for the locally owned, unconstrained u_y unknowns of
     // the top surface, x their abscissa; a node shared by two faces twice.
     template <typename Function>

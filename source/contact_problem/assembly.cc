@@ -46,14 +46,12 @@ namespace viscoslide
                                       mpi_communicator));
     sp.compress();
     // The solver objects refer to the old matrix: release them first.
-    linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints),
-                         [this] {
-                           return coupling.surface_window(dof_handler,
-                                                          constraints,
-                                                          solution,
-                                                          current.delta,
-                                                          current.s);
-                         });
+    coupling.attach(linear_solver,
+                    dof_handler,
+                    constraints,
+                    solution,
+                    current.delta,
+                    current.s);
     amg.reset();
     system_matrix.reinit(sp);
     bulk_matrix.reinit(sp);

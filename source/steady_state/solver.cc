@@ -123,11 +123,8 @@ namespace viscoslide
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
-    linear_solver.reinit(coupling.surface_unknowns(dof_handler, constraints),
-                         [this] {
-                           return coupling.surface_window(
-                             dof_handler, constraints, solution, delta, s);
-                         });
+    coupling.attach(
+      linear_solver, dof_handler, constraints, solution, delta, s);
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,

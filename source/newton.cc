@@ -157,7 +157,9 @@ namespace viscoslide
         if (verbose)
           out << "      relaxation " << k << ": residual " << r << ", dashpot "
               << c << std::endl;
-        if (!std::isfinite(r) || !std::isfinite(moved))
+        // A pseudo-step that multiplies the residual tenfold has pushed
+        // surface nodes into the traction law's wall: it was too long.
+        if (!std::isfinite(r) || !std::isfinite(moved) || r > 10. * residual)
           {
             p.step(0.);
             c *= 4.;

@@ -11,6 +11,10 @@
 #include <viscoslide/steady_state/solver.h>
 #include <viscoslide/steady_state/viscous_strain.h>
 
+#include <array>
+#include <cmath>
+#include <map>
+
 namespace viscoslide
 {
   using ViscousStrain::components_per_arm;
@@ -28,6 +32,8 @@ namespace viscoslide
     std::vector<unsigned int> component; // of each local dof
     // The local dofs of each strain component.
     std::vector<std::vector<unsigned int>> strain_dofs;
+    // The resolution of a cell's shape (see AssemblyScratch).
+    double shape_quantum;
   };
 
 
@@ -59,8 +65,14 @@ namespace viscoslide
     {
     }
 
-    FEValues<2>                        fe_values;
-    FEInterfaceValues<2>               interface_values;
+    // The cell matrices by cell shape: the bulk operator is the same in
+    // every cell of one shape (a homogeneous solid and a constant speed),
+    // and the graded mesh has few shapes among its thousands of cells. A
+    // shape is the offsets of its vertices from the first, in units of
+    // shape_quantum.
+    std::map<std::array<long long, 6>, FullMatrix<double>> matrix_of_shape;
+    FEValues<2>                                            fe_values;
+    FEInterfaceValues<2>                                   interface_values;
     std::vector<SymmetricTensor<2, 2>> grad_phi_q, projected_grad_q;
     Table<2, SymmetricTensor<2, 2>>    grad_phi, projected_grad;
     std::vector<SymmetricTensor<2, 2>> C_arm_i; // of each arm
@@ -178,8 +190,11 @@ namespace viscoslide
           V_hat * scales.eps / scales.tau_ref * material.relaxation_time(arm);
         coefficients.row_scale[c] = material.arm_modulus(arm);
       }
-    coefficients.C0    = material.relaxed_stiffness();
-    coefficients.C_sum = material.arm_stiffness(0);
+    // A ten-billionth of the finest cell: the vertices' rounding is far
+    // below it, a change of shape that matters far above it.
+    coefficients.shape_quantum = 1e-10 * prm.mesh.finest_cell;
+    coefficients.C0            = material.relaxed_stiffness();
+    coefficients.C_sum         = material.arm_stiffness(0);
     for (unsigned int a = 1; a < material.n_arms(); ++a)
       coefficients.C_sum += material.arm_stiffness(a);
     coefficients.strain_dofs.resize(n_strain_components);
@@ -264,9 +279,21 @@ namespace viscoslide
     auto              &grad_phi_q       = scratch.grad_phi_q;
     auto              &projected_grad_q = scratch.projected_grad_q;
 
-    copy.cell_matrix = 0;
     copy.faces.clear();
     cell->get_dof_indices(copy.dofs);
+    std::array<long long, 6> shape;
+    for (unsigned int v = 1; v < 4; ++v)
+      for (unsigned int d = 0; d < dim; ++d)
+        shape[2 * (v - 1) + d] =
+          std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) /
+                       coefficients.shape_quantum);
+    if (const auto known = scratch.matrix_of_shape.find(shape);
+        known != scratch.matrix_of_shape.end())
+      {
+        copy.cell_matrix = known->second;
+        return;
+      }
+    copy.cell_matrix = 0;
     scratch.fe_values.reinit(cell);
 
     // The arm sees the projection Pi eps(u) (viscous_strain.h).
@@ -330,6 +357,7 @@ namespace viscoslide
                                             fe_values.shape_value(j, q) * JxW;
             }
       }
+    scratch.matrix_of_shape.emplace(shape, copy.cell_matrix);
   }
 
 

@@ -37,6 +37,25 @@ namespace viscoslide
   };
 
 
+  namespace
+  {
+    // The offsets of a cell's vertices from its first, in units of the
+    // shape quantum: equal for two cells of one shape.
+    template <typename Iterator, typename Coefficients>
+    std::array<long long, 6>
+    shape_of(const Iterator &cell, const Coefficients &coefficients)
+    {
+      std::array<long long, 6> shape;
+      for (unsigned int v = 1; v < 4; ++v)
+        for (unsigned int d = 0; d < 2; ++d)
+          shape[2 * (v - 1) + d] =
+            std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) /
+                         coefficients.shape_quantum);
+      return shape;
+    }
+  } // namespace
+
+
   // FEValues objects and work arrays; copied per thread by mesh_loop.
   struct SteadyStateSolver::AssemblyScratch
   {
@@ -71,11 +90,19 @@ namespace viscoslide
     // shape is the offsets of its vertices from the first, in units of
     // shape_quantum.
     std::map<std::array<long long, 6>, FullMatrix<double>> matrix_of_shape;
-    FEValues<2>                                            fe_values;
-    FEInterfaceValues<2>                                   interface_values;
-    std::vector<SymmetricTensor<2, 2>> grad_phi_q, projected_grad_q;
-    Table<2, SymmetricTensor<2, 2>>    grad_phi, projected_grad;
-    std::vector<SymmetricTensor<2, 2>> C_arm_i; // of each arm
+    // The same for the flux blocks of interior faces, by the shapes of the
+    // two cells, their offset and the face numbers.
+    struct FaceBlock
+    {
+      bool               upwind_is_mine = false;
+      FullMatrix<double> matrix;
+    };
+    std::map<std::array<long long, 18>, FaceBlock> block_of_pair;
+    FEValues<2>                                    fe_values;
+    FEInterfaceValues<2>                           interface_values;
+    std::vector<SymmetricTensor<2, 2>>             grad_phi_q, projected_grad_q;
+    Table<2, SymmetricTensor<2, 2>>                grad_phi, projected_grad;
+    std::vector<SymmetricTensor<2, 2>>             C_arm_i; // of each arm
   };
 
 
@@ -281,12 +308,7 @@ namespace viscoslide
 
     copy.faces.clear();
     cell->get_dof_indices(copy.dofs);
-    std::array<long long, 6> shape;
-    for (unsigned int v = 1; v < 4; ++v)
-      for (unsigned int d = 0; d < dim; ++d)
-        shape[2 * (v - 1) + d] =
-          std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) /
-                       coefficients.shape_quantum);
+    const auto shape = shape_of(cell, coefficients);
     if (const auto known = scratch.matrix_of_shape.find(shape);
         known != scratch.matrix_of_shape.end())
       {
@@ -416,6 +438,66 @@ namespace viscoslide
     // reinit).
     if (!cell->is_locally_owned() || !carries_flux(cell, face_no))
       return;
+    // The block depends on the pair's geometry alone (see
+    // AssemblyScratch::matrix_of_shape).
+    const auto                mine_shape = shape_of(cell, coefficients);
+    const auto                other      = shape_of(neighbor, coefficients);
+    std::array<long long, 18> pair;
+    std::copy(mine_shape.begin(), mine_shape.end(), pair.begin());
+    std::copy(other.begin(), other.end(), pair.begin() + 6);
+    for (unsigned int d = 0; d < dim; ++d)
+      pair[12 + d] =
+        std::llround((neighbor->vertex(0)[d] - cell->vertex(0)[d]) /
+                     coefficients.shape_quantum);
+    pair[14]                   = face_no;
+    pair[15]                   = subface_no;
+    pair[16]                   = neighbor_face_no;
+    pair[17]                   = neighbor_subface_no;
+    const auto &strain_dofs    = coefficients.strain_dofs;
+    const auto [known, is_new] = scratch.block_of_pair.try_emplace(pair);
+    auto &block                = known->second;
+    if (is_new)
+      face_block(cell,
+                 face_no,
+                 subface_no,
+                 neighbor,
+                 neighbor_face_no,
+                 neighbor_subface_no,
+                 coefficients,
+                 scratch,
+                 block.upwind_is_mine,
+                 block.matrix);
+
+    // Rows: the strain dofs of `cell`; columns: those of the upwind cell.
+    std::vector<types::global_dof_index> mine_dofs(fe.n_dofs_per_cell()),
+      upwind_dofs(fe.n_dofs_per_cell());
+    cell->get_dof_indices(mine_dofs);
+    (block.upwind_is_mine ? cell : neighbor)->get_dof_indices(upwind_dofs);
+    AssemblyCopy::Face face;
+    for (unsigned int c = 0; c < n_strain_components; ++c)
+      for (const unsigned int i : strain_dofs[c])
+        {
+          face.rows.push_back(mine_dofs[i]);
+          face.columns.push_back(upwind_dofs[i]);
+        }
+    face.matrix = block.matrix;
+    copy.faces.push_back(std::move(face));
+  }
+
+
+  void
+  SteadyStateSolver::face_block(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                           face_no,
+    const unsigned int                           subface_no,
+    const DoFHandler<dim>::active_cell_iterator &neighbor,
+    const unsigned int                           neighbor_face_no,
+    const unsigned int                           neighbor_subface_no,
+    const AssemblyCoefficients                  &coefficients,
+    AssemblyScratch                             &scratch,
+    bool                                        &upwind_is_mine,
+    FullMatrix<double>                          &matrix) const
+  {
     FEInterfaceValues<dim> &fe_iv = scratch.interface_values;
     fe_iv.reinit(cell,
                  face_no,
@@ -424,26 +506,12 @@ namespace viscoslide
                  neighbor_face_no,
                  neighbor_subface_no);
     // The faces are straight: beta . n has one sign on a face.
-    const bool  upwind_is_mine = fe_iv.normal(0)[0] < 0; // beta . n > 0
-    const auto &mine           = fe_iv.get_fe_face_values(0);
-    const auto &upwind = fe_iv.get_fe_face_values(upwind_is_mine ? 0 : 1);
-
-    // Rows: the strain dofs of `cell`; columns: those of the upwind cell.
-    const auto                          &strain_dofs = coefficients.strain_dofs;
-    const unsigned int                   m           = strain_dofs[0].size();
-    std::vector<types::global_dof_index> mine_dofs(fe.n_dofs_per_cell()),
-      upwind_dofs(fe.n_dofs_per_cell());
-    cell->get_dof_indices(mine_dofs);
-    (upwind_is_mine ? cell : neighbor)->get_dof_indices(upwind_dofs);
-    AssemblyCopy::Face face;
-    face.matrix.reinit(n_strain_components * m, n_strain_components * m);
-    for (unsigned int c = 0; c < n_strain_components; ++c)
-      for (const unsigned int i : strain_dofs[c])
-        {
-          face.rows.push_back(mine_dofs[i]);
-          face.columns.push_back(upwind_dofs[i]);
-        }
-
+    upwind_is_mine          = fe_iv.normal(0)[0] < 0; // beta . n > 0
+    const auto &mine        = fe_iv.get_fe_face_values(0);
+    const auto &upwind      = fe_iv.get_fe_face_values(upwind_is_mine ? 0 : 1);
+    const auto &strain_dofs = coefficients.strain_dofs;
+    const unsigned int m    = strain_dofs[0].size();
+    matrix.reinit(n_strain_components * m, n_strain_components * m);
     for (unsigned int q = 0; q < fe_iv.n_quadrature_points; ++q)
       for (unsigned int c = 0; c < n_strain_components; ++c)
         {
@@ -454,10 +522,9 @@ namespace viscoslide
             {
               const double w = mine.shape_value(strain_dofs[c][a], q);
               for (unsigned int b = 0; b < m; ++b)
-                face.matrix(c * m + a, c * m + b) +=
+                matrix(c * m + a, c * m + b) +=
                   scale * upwind.shape_value(strain_dofs[c][b], q) * w;
             }
         }
-    copy.faces.push_back(std::move(face));
   }
 } // namespace viscoslide

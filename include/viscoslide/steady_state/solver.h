@@ -32,6 +32,7 @@
 #include <deal.II/fe/fe_system.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -198,6 +199,19 @@ namespace viscoslide
                        const AssemblyCoefficients &coefficients,
                        AssemblyScratch            &scratch,
                        AssemblyCopy               &copy) const;
+    // The flux block of assemble_interface(), and on which side the
+    // upwind cell lies.
+    void
+    face_block(const DoFHandler<dim>::active_cell_iterator &cell,
+               unsigned int                                 face_no,
+               unsigned int                                 subface_no,
+               const DoFHandler<dim>::active_cell_iterator &neighbor,
+               unsigned int                                 neighbor_face_no,
+               unsigned int                                 neighbor_subface_no,
+               const AssemblyCoefficients                  &coefficients,
+               AssemblyScratch                             &scratch,
+               bool                                        &upwind_is_mine,
+               FullMatrix<double>                          &matrix) const;
     // [solver.cc]
     void
     solve_newton_system();

@@ -350,6 +350,36 @@ namespace viscoslide
 
 
   void
+  ReusedFactorization::restore_surface_rows(
+    const TrilinosWrappers::SparseMatrix &bulk,
+    TrilinosWrappers::SparseMatrix       &system) const
+  {
+    const Epetra_CrsMatrix &from = bulk.trilinos_matrix();
+    const Epetra_CrsMatrix &to   = system.trilinos_matrix();
+    for (const auto row : surface)
+      {
+        int     n, m;
+        double *source, *target;
+        int    *columns;
+        from.ExtractMyRowView(from.LRID(static_cast<long long int>(row)),
+                              n,
+                              source,
+                              columns);
+        // Epetra hands out the row's values for writing even on a const
+        // matrix; the pattern, and so the matrix's state, stays.
+        to.ExtractMyRowView(to.LRID(static_cast<long long int>(row)),
+                            m,
+                            target,
+                            columns);
+        AssertThrow(n == m,
+                    ExcMessage("The bulk and system matrices differ in their "
+                               "pattern"));
+        std::copy(source, source + n, target);
+      }
+  }
+
+
+  void
   ReusedFactorization::factorize_if_needed(
     const TrilinosWrappers::SparseMatrix &matrix)
   {

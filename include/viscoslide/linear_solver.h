@@ -164,6 +164,14 @@ namespace viscoslide
     void
     matrix_changed(double bulk);
 
+    // Gives `system` the values of `bulk`, whose pattern it shares, where
+    // the surface terms act (the surface unknowns' rows): the rest of a
+    // system matrix assembled from this bulk holds them already, and
+    // copying those rows alone is cheaper than copying the matrix.
+    void
+    restore_surface_rows(const TrilinosWrappers::SparseMatrix &bulk,
+                         TrilinosWrappers::SparseMatrix       &system) const;
+
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           const TrilinosWrappers::MPI::Vector  &rhs,

@@ -55,7 +55,8 @@ namespace viscoslide
     amg.reset();
     system_matrix.reinit(sp);
     bulk_matrix.reinit(sp);
-    bulk_dt = -1.;
+    bulk_dt     = -1.;
+    system_bulk = -1.;
 
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
@@ -84,7 +85,11 @@ namespace viscoslide
     TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
     if (with_matrix)
       {
-        system_matrix.copy_from(bulk_matrix);
+        if (system_bulk == bulk_dt)
+          linear_solver.restore_surface_rows(bulk_matrix, system_matrix);
+        else
+          system_matrix.copy_from(bulk_matrix);
+        system_bulk = bulk_dt;
         linear_solver.matrix_changed(current.dt);
       }
     system_rhs = 0;

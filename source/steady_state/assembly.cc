@@ -149,7 +149,11 @@ namespace viscoslide
                                      : "steady: assemble residual");
     if (with_matrix)
       {
-        system_matrix.copy_from(bulk_matrix);
+        if (system_bulk == bulk_speed)
+          linear_solver.restore_surface_rows(bulk_matrix, system_matrix);
+        else
+          system_matrix.copy_from(bulk_matrix);
+        system_bulk = bulk_speed;
         linear_solver.matrix_changed(V_hat);
       }
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);

@@ -157,9 +157,7 @@ namespace viscoslide
         if (verbose)
           out << "      relaxation " << k << ": residual " << r << ", dashpot "
               << c << std::endl;
-        // A pseudo-step that multiplies the residual tenfold has pushed
-        // surface nodes into the traction law's wall: it was too long.
-        if (!std::isfinite(r) || !std::isfinite(moved) || r > 10. * residual)
+        if (!std::isfinite(r) || !std::isfinite(moved))
           {
             p.step(0.);
             c *= 4.;

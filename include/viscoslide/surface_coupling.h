@@ -253,7 +253,7 @@ namespace viscoslide
     // Collective: the face terms of add_face_terms() on the rows of the
     // window T (global indices, ascending) as functions of the unknowns of
     // T and of delta, for ReusedFactorization's Newton iterations on T
-    // (the unknowns outside T held). Without terms during relax().
+    // (the unknowns outside T held). Without terms within relax().
     WindowModel
     window_model(const DoFHandler<2>             &dof_handler,
                  const AffineConstraints<double> &constraints,
@@ -356,8 +356,9 @@ namespace viscoslide
     // Residual scale of the last assembly: the total |traction| force.
     double traction_scale = 0.;
 
-    double     surface_damping = 0.; // relax() only
-    VectorType relaxation_anchor;    // ghosted
+    double     surface_damping = 0.;    // relax() only
+    bool       relaxing        = false; // within relax()
+    VectorType relaxation_anchor;       // ghosted
 
     // The iterate a line search starts from.
     VectorType u0;

@@ -43,6 +43,30 @@ namespace viscoslide
       unsigned int           iterations = 0;
     };
 
+    // The Jacobian of the reduced system of T: the bulk's reduced operator
+    // and the surface tangent, bordered under force control by b_T and
+    // dG/d delta = d.
+    LAPACKFullMatrix<double>
+    window_jacobian(const FullMatrix<double> &bulk,
+                    const WindowTerms        &W,
+                    const bool                bordered,
+                    const double              d)
+    {
+      const unsigned int       k = bulk.m(), n = bordered ? k + 1 : k;
+      LAPACKFullMatrix<double> J(n, n);
+      for (unsigned int i = 0; i < k; ++i)
+        for (unsigned int j = 0; j < k; ++j)
+          J(i, j) = bulk(i, j) + W.tangent(i, j);
+      if (bordered)
+        {
+          for (unsigned int i = 0; i < k; ++i)
+            J(k, i) = J(i, k) = W.border(i);
+          J(k, k) = d;
+        }
+      return J;
+    }
+
+
     // Newton's method on the reduced system of T (ReusedFactorization):
     // K = S + D is its matrix at x_T = 0, y and m the reduced right-hand
     // side and the border's, start_norm the whole system's residual norm.
@@ -91,16 +115,8 @@ namespace viscoslide
       double      norm = std::max(residual(W, s.x), start_norm);
       while (s.iterations < 50 && norm > 1e-2 * model.tolerance)
         {
-          LAPACKFullMatrix<double> J(n, n);
-          for (unsigned int i = 0; i < k; ++i)
-            for (unsigned int j = 0; j < k; ++j)
-              J(i, j) = bulk(i, j) + W.tangent(i, j);
-          if (bordered)
-            {
-              for (unsigned int i = 0; i < k; ++i)
-                J(k, i) = J(i, k) = W.border(i);
-              J(k, k) = d + W.stiffness - at_start.stiffness;
-            }
+          LAPACKFullMatrix<double> J = window_jacobian(
+            bulk, W, bordered, d + W.stiffness - at_start.stiffness);
           dealii::Vector<double> step(c);
           J.compute_lu_factorization();
           J.solve(step);

@@ -212,10 +212,142 @@ namespace viscoslide
   }
 
 
-  // Per top face that touches T: its u_y unknowns (global index, position
-  // in T or -1, value) and per quadrature point (x, JxW, the unknowns'
-  // shape values), gathered on the host, where the model evaluates the
-  // face terms of add_face_terms() at moved unknowns.
+  namespace
+  {
+    // The top faces that touch a window T, on the first process: per face
+    // its m u_y unknowns (position in T or -1, value), then per quadrature
+    // point its abscissa, JxW and the m shape values.
+    struct WindowFaces
+    {
+      unsigned int        m = 0, n_q = 0;
+      std::vector<double> data;
+
+      unsigned int
+      record() const
+      {
+        return 2 * m + n_q * (2 + m);
+      }
+    };
+
+
+    // Gathers them; empty on every process if a face's unknown is
+    // constrained (not expected on the top surface).
+    WindowFaces
+    gather_window_faces(const DoFHandler<2>                 &dof_handler,
+                        const AffineConstraints<double>     &constraints,
+                        const TrilinosWrappers::MPI::Vector &solution,
+                        const Quadrature<1>                 &quadrature,
+                        const std::vector<int>              &T,
+                        const MPI_Comm                       comm)
+    {
+      const auto     &fe = dof_handler.get_fe();
+      WindowFaces     faces;
+      FEFaceValues<2> values(fe,
+                             quadrature,
+                             SurfaceCoupling::face_update_flags());
+      faces.n_q = quadrature.size();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      const auto position = [&T](const types::global_dof_index i) {
+        const auto p = std::lower_bound(T.begin(), T.end(), int(i));
+        return (p != T.end() && *p == int(i)) ? int(p - T.begin()) : -1;
+      };
+      int constrained = 0, m = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          {
+            if (!cell->is_locally_owned() || !is_top_face(cell, f))
+              continue;
+            cell->get_dof_indices(dofs);
+            std::vector<unsigned int> on_face;
+            bool                      touches = false;
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (fe.system_to_component_index(i).first == 1 &&
+                  fe.has_support_on_face(i, f))
+                {
+                  on_face.push_back(i);
+                  touches = touches || position(dofs[i]) >= 0;
+                }
+            if (!touches)
+              continue;
+            values.reinit(cell, f);
+            m = on_face.size();
+            for (const unsigned int i : on_face)
+              {
+                constrained |= constraints.is_constrained(dofs[i]);
+                faces.data.insert(faces.data.end(),
+                                  {double(position(dofs[i])),
+                                   solution[dofs[i]]});
+              }
+            for (unsigned int q = 0; q < faces.n_q; ++q)
+              {
+                faces.data.insert(faces.data.end(),
+                                  {values.quadrature_point(q)[0],
+                                   values.JxW(q)});
+                for (const unsigned int i : on_face)
+                  faces.data.push_back(values.shape_value_component(i, q, 1));
+              }
+          }
+      faces.data = gather_concatenated(comm, faces.data, 0);
+      faces.m    = Utilities::MPI::max(m, comm);
+      if (Utilities::MPI::max(constrained, comm) != 0)
+        faces.data.clear();
+      return faces;
+    }
+
+
+    // The terms of add_face_terms() on the rows of T (k of them) with T's
+    // unknowns moved by x_T; law(x, u_y) gives the traction and its
+    // derivative there.
+    template <typename Law>
+    WindowTerms
+    window_terms(const WindowFaces            &faces,
+                 const unsigned int            k,
+                 const dealii::Vector<double> &x_T,
+                 const Law                    &law)
+    {
+      WindowTerms W;
+      W.rhs.reinit(k);
+      W.tangent.reinit(k, k);
+      W.border.reinit(k);
+      const unsigned int  m = faces.m;
+      std::vector<int>    p(m);
+      std::vector<double> u(m);
+      for (std::size_t face = 0; face + faces.record() <= faces.data.size();
+           face += faces.record())
+        {
+          const double *r = &faces.data[face];
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              p[j] = static_cast<int>(r[2 * j]);
+              u[j] = r[2 * j + 1] + (p[j] >= 0 ? x_T(p[j]) : 0.);
+            }
+          for (unsigned int q = 0; q < faces.n_q; ++q)
+            {
+              const double *point = r + 2 * m + q * (2 + m);
+              const double  JxW   = point[1];
+              const double *phi   = point + 2;
+              double        u_q   = 0.;
+              for (unsigned int j = 0; j < m; ++j)
+                u_q += phi[j] * u[j];
+              const auto [traction, dp_dg] = law(point[0], u_q);
+              W.force -= traction * JxW;
+              W.stiffness += dp_dg * JxW;
+              for (unsigned int i = 0; i < m; ++i)
+                if (p[i] >= 0)
+                  {
+                    W.rhs(p[i]) += traction * phi[i] * JxW;
+                    W.border(p[i]) += dp_dg * phi[i] * JxW;
+                    for (unsigned int j = 0; j < m; ++j)
+                      if (p[j] >= 0)
+                        W.tangent(p[i], p[j]) += dp_dg * phi[i] * phi[j] * JxW;
+                  }
+            }
+        }
+      return W;
+    }
+  } // namespace
+
+
   WindowModel
   SurfaceCoupling::window_model(const DoFHandler<2>             &dof_handler,
                                 const AffineConstraints<double> &constraints,
@@ -233,105 +365,22 @@ namespace viscoslide
     // method on the jump-in of two tests).
     if (relaxing)
       return model;
-
-    const auto        &fe  = dof_handler.get_fe();
-    const unsigned int n_q = quadrature.size();
-    FEFaceValues<2>    values(fe, quadrature, face_update_flags());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    const auto position = [&T](const types::global_dof_index i) {
-      const auto p = std::lower_bound(T.begin(), T.end(), static_cast<int>(i));
-      return (p != T.end() && *p == static_cast<int>(i)) ? int(p - T.begin())
-                                                         : -1;
-    };
-    std::vector<double> data;
-    int                 constrained = 0, per_face = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const auto f : cell->face_indices())
-        {
-          if (!cell->is_locally_owned() || !is_top_face(cell, f))
-            continue;
-          cell->get_dof_indices(dofs);
-          std::vector<unsigned int> on_face;
-          bool                      touches = false;
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (fe.system_to_component_index(i).first == 1 &&
-                fe.has_support_on_face(i, f))
-              {
-                on_face.push_back(i);
-                touches = touches || position(dofs[i]) >= 0;
-              }
-          if (!touches)
-            continue;
-          values.reinit(cell, f);
-          per_face = on_face.size();
-          for (const unsigned int i : on_face)
-            {
-              constrained |= constraints.is_constrained(dofs[i]);
-              data.insert(data.end(),
-                          {double(position(dofs[i])), solution[dofs[i]]});
-            }
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              data.insert(data.end(),
-                          {values.quadrature_point(q)[0], values.JxW(q)});
-              for (const unsigned int i : on_face)
-                data.push_back(values.shape_value_component(i, q, 1));
-            }
-        }
-    data     = gather_concatenated(comm, data, 0);
-    per_face = Utilities::MPI::max(per_face, comm);
-    if (Utilities::MPI::max(constrained, comm) != 0)
-      return model; // not expected on the top surface; one solve then
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
+    const WindowFaces faces = gather_window_faces(
+      dof_handler, constraints, solution, quadrature, T, comm);
+    if (Utilities::MPI::this_mpi_process(comm) != 0 || faces.data.empty())
       return model;
-
-    const unsigned int k = T.size(), m = per_face;
-    const unsigned int record = 2 * m + n_q * (2 + m);
-    const double       spring = spring_stiffness;
-    model.terms = [this, data, k, m, n_q, record, delta, s, spring](
-                    const dealii::Vector<double> &x_T, const double t) {
-      WindowTerms W;
-      W.rhs.reinit(k);
-      W.tangent.reinit(k, k);
-      W.border.reinit(k);
-      std::vector<int>    p(m);
-      std::vector<double> u(m);
-      for (std::size_t face = 0; face + record <= data.size(); face += record)
-        {
-          const double *r = &data[face];
-          for (unsigned int j = 0; j < m; ++j)
-            {
-              p[j] = static_cast<int>(r[2 * j]);
-              u[j] = r[2 * j + 1] + (p[j] >= 0 ? x_T(p[j]) : 0.);
-            }
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const double *point = r + 2 * m + q * (2 + m);
-              const double  JxW   = point[1];
-              const double *phi   = point + 2;
-              double        u_q   = 0.;
-              for (unsigned int j = 0; j < m; ++j)
-                u_q += phi[j] * u[j];
-              const auto [traction, dp_dg] =
-                law_at(point[0], u_q, delta + t, s);
-              W.force -= traction * JxW;
-              W.stiffness += dp_dg * JxW;
-              for (unsigned int i = 0; i < m; ++i)
-                if (p[i] >= 0)
-                  {
-                    W.rhs(p[i]) += traction * phi[i] * JxW;
-                    W.border(p[i]) += dp_dg * phi[i] * JxW;
-                    for (unsigned int j = 0; j < m; ++j)
-                      if (p[j] >= 0)
-                        W.tangent(p[i], p[j]) += dp_dg * phi[i] * phi[j] * JxW;
-                  }
-            }
-        }
-      // G's spring term under spring control.
-      W.force += spring * t;
-      W.stiffness += spring;
-      return W;
-    };
+    model.terms =
+      [this, faces, k = T.size(), delta, s](const dealii::Vector<double> &x_T,
+                                            const double                  t) {
+        WindowTerms W =
+          window_terms(faces, k, x_T, [&](const double x, const double u_y) {
+            return law_at(x, u_y, delta + t, s);
+          });
+        // G's spring term under spring control.
+        W.force += spring_stiffness * t;
+        W.stiffness += spring_stiffness;
+        return W;
+      };
     return model;
   }
 

@@ -349,6 +349,7 @@ namespace viscoslide
                               WindowModelBuilder        model)
   {
     build_model = std::move(model);
+    system_bulk = -1.;
     direct.clear();
     factorized    = false;
     surface       = surface_unknowns;
@@ -362,6 +363,20 @@ namespace viscoslide
   ReusedFactorization::matrix_changed(const double bulk)
   {
     assembled_bulk = bulk;
+  }
+
+
+  void
+  ReusedFactorization::load_bulk(const TrilinosWrappers::SparseMatrix &bulk,
+                                 TrilinosWrappers::SparseMatrix       &system,
+                                 const double                          bulk_id)
+  {
+    if (system_bulk == bulk_id)
+      restore_surface_rows(bulk, system);
+    else
+      system.copy_from(bulk);
+    system_bulk = bulk_id;
+    matrix_changed(bulk_id);
   }
 
 

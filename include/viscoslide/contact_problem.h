@@ -285,13 +285,10 @@ namespace viscoslide
     // none on this mesh).
     TrilinosWrappers::SparseMatrix bulk_matrix;
     double                         bulk_dt = -1.;
-    // The bulk operator whose values the system matrix holds off the
-    // surface rows (-1: none).
-    double                        system_bulk = -1.;
-    TrilinosWrappers::MPI::Vector solution;     // ghosted, current iterate
-    TrilinosWrappers::MPI::Vector old_solution; // ghosted, last committed
-    TrilinosWrappers::MPI::Vector system_rhs;
-    TrilinosWrappers::MPI::Vector newton_update;
+    TrilinosWrappers::MPI::Vector  solution;     // ghosted, current iterate
+    TrilinosWrappers::MPI::Vector  old_solution; // ghosted, last committed
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    TrilinosWrappers::MPI::Vector  newton_update;
     // Change of the solution over the last committed step and the change of
     // delta and s it came with: the secant predictor of the next step.
     TrilinosWrappers::MPI::Vector last_increment; // ghosted

@@ -164,13 +164,16 @@ namespace viscoslide
     void
     matrix_changed(double bulk);
 
-    // Gives `system` the values of `bulk`, whose pattern it shares, where
-    // the surface terms act (the surface unknowns' rows): the rest of a
-    // system matrix assembled from this bulk holds them already, and
-    // copying those rows alone is cheaper than copying the matrix.
+    // Makes `system` the matrix `bulk` (whose pattern it shares) of the
+    // bulk operator named by `bulk_id` again, before a Newton iteration
+    // adds its surface terms, and calls matrix_changed(bulk_id). Only the
+    // surface unknowns' rows are copied if `system` holds that operator
+    // already (since reinit()): its other rows are the bulk's, and copying
+    // the whole matrix costs more.
     void
-    restore_surface_rows(const TrilinosWrappers::SparseMatrix &bulk,
-                         TrilinosWrappers::SparseMatrix       &system) const;
+    load_bulk(const TrilinosWrappers::SparseMatrix &bulk,
+              TrilinosWrappers::SparseMatrix       &system,
+              double                                bulk_id);
 
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
@@ -213,6 +216,9 @@ namespace viscoslide
     };
 
     void
+    restore_surface_rows(const TrilinosWrappers::SparseMatrix &bulk,
+                         TrilinosWrappers::SparseMatrix       &system) const;
+    void
     factorize_if_needed(const TrilinosWrappers::SparseMatrix &matrix);
     void
     factorize(const TrilinosWrappers::SparseMatrix &matrix);
@@ -246,6 +252,9 @@ namespace viscoslide
     bool   factorized      = false;
     double factorized_bulk = 0.;
     double assembled_bulk  = 0.;
+    // The bulk operator whose matrix the system matrix holds off the
+    // surface rows (-1: none since reinit()).
+    double system_bulk = -1.;
     // The owned surface rows of the factorized matrix, where their entries
     // go, and the magnitude of each row's diagonal.
     std::vector<Entry>  entries;

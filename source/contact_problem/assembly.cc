@@ -55,8 +55,7 @@ namespace viscoslide
     amg.reset();
     system_matrix.reinit(sp);
     bulk_matrix.reinit(sp);
-    bulk_dt     = -1.;
-    system_bulk = -1.;
+    bulk_dt = -1.;
 
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
@@ -85,12 +84,7 @@ namespace viscoslide
     TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
     if (with_matrix)
       {
-        if (system_bulk == bulk_dt)
-          linear_solver.restore_surface_rows(bulk_matrix, system_matrix);
-        else
-          system_matrix.copy_from(bulk_matrix);
-        system_bulk = bulk_dt;
-        linear_solver.matrix_changed(current.dt);
+        linear_solver.load_bulk(bulk_matrix, system_matrix, current.dt);
       }
     system_rhs = 0;
     coupling.start_assembly();

@@ -149,12 +149,7 @@ namespace viscoslide
                                      : "steady: assemble residual");
     if (with_matrix)
       {
-        if (system_bulk == bulk_speed)
-          linear_solver.restore_surface_rows(bulk_matrix, system_matrix);
-        else
-          system_matrix.copy_from(bulk_matrix);
-        system_bulk = bulk_speed;
-        linear_solver.matrix_changed(V_hat);
+        linear_solver.load_bulk(bulk_matrix, system_matrix, V_hat);
       }
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     x = solution;

@@ -130,8 +130,7 @@ namespace viscoslide
                          dsp,
                          mpi_communicator);
     bulk_matrix.reinit(system_matrix);
-    bulk_speed  = -1.;
-    system_bulk = -1.;
+    bulk_speed = -1.;
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);

@@ -267,12 +267,9 @@ namespace viscoslide
     // none on this mesh).
     TrilinosWrappers::SparseMatrix bulk_matrix;
     double                         bulk_speed = -1.;
-    // The bulk operator whose values the system matrix holds off the
-    // surface rows (-1: none).
-    double                        system_bulk = -1.;
-    TrilinosWrappers::MPI::Vector solution; // ghosted
-    TrilinosWrappers::MPI::Vector system_rhs, newton_update;
-    ReusedFactorization           linear_solver;
+    TrilinosWrappers::MPI::Vector  solution; // ghosted
+    TrilinosWrappers::MPI::Vector  system_rhs, newton_update;
+    ReusedFactorization            linear_solver;
 
     double V_hat = 0.;
     double delta = 0.;

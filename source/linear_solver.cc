@@ -47,16 +47,18 @@ namespace viscoslide
     // and the surface tangent, bordered under force control by b_T and
     // dG/d delta = d.
     LAPACKFullMatrix<double>
-    window_jacobian(const FullMatrix<double> &bulk,
-                    const WindowTerms        &W,
-                    const bool                bordered,
-                    const double              d)
+    window_jacobian(const LAPACKFullMatrix<double> &bulk,
+                    const WindowTerms              &W,
+                    const bool                      bordered,
+                    const double                    d)
     {
       const unsigned int       k = bulk.m(), n = bordered ? k + 1 : k;
       LAPACKFullMatrix<double> J(n, n);
-      for (unsigned int i = 0; i < k; ++i)
-        for (unsigned int j = 0; j < k; ++j)
-          J(i, j) = bulk(i, j) + W.tangent(i, j);
+      for (unsigned int j = 0; j < k; ++j) // by columns, as stored
+        for (unsigned int i = 0; i < k; ++i)
+          J(i, j) = bulk(i, j);
+      for (const auto &e : W.tangent)
+        J(e.row, e.column) += e.value;
       if (bordered)
         {
           for (unsigned int i = 0; i < k; ++i)
@@ -90,10 +92,12 @@ namespace viscoslide
       s.x.reinit(k);
       const WindowTerms at_start = model.terms(s.x, 0.);
       // The bulk's reduced operator: S less the surface tangent it holds.
-      FullMatrix<double> bulk(k, k);
-      for (unsigned int i = 0; i < k; ++i)
-        for (unsigned int j = 0; j < k; ++j)
-          bulk(i, j) = K(i, j) - at_start.tangent(i, j);
+      LAPACKFullMatrix<double> bulk(k, k);
+      for (unsigned int j = 0; j < k; ++j)
+        for (unsigned int i = 0; i < k; ++i)
+          bulk(i, j) = K(i, j);
+      for (const auto &e : at_start.tangent)
+        bulk(e.row, e.column) -= e.value;
 
       // The reduced residual (and G's row) at x_T, for W = the terms there.
       dealii::Vector<double> c(n), bx(k);
@@ -221,12 +225,27 @@ namespace viscoslide
     mumps->icntl(19) = 1;  // the Schur complement on the host, by rows
     mumps->icntl(20) = 0;  // dense right-hand side on the host
     mumps->icntl(21) = 0;  // solution on the host
+    // Rows and columns scaled by their largest entries, once: the strain
+    // rows of the steady state scale with cell area (1e6 apart), and
+    // MUMPS's default, an iterative scaling, costs a tenth of each
+    // factorization for no change in the solutions.
+    mumps->icntl(8) = 4;
 
+    // The global indices, 1-based, looked up once per row and column
+    // rather than once per entry.
+    const auto one_based = [](const Epetra_BlockMap &map) {
+      std::vector<int> index(map.NumMyElements());
+      for (int i = 0; i < map.NumMyElements(); ++i)
+        index[i] = static_cast<int>(map.GID64(i)) + 1;
+      return index;
+    };
+    const std::vector<int> row_index    = one_based(A.RowMap()),
+                           column_index = one_based(A.ColMap());
     rows.clear();
     columns.clear();
     for_each_local_entry(A, [&](const int r, const int c, double) {
-      rows.push_back(static_cast<int>(A.RowMap().GID64(r)) + 1);
-      columns.push_back(static_cast<int>(A.ColMap().GID64(c)) + 1);
+      rows.push_back(row_index[r]);
+      columns.push_back(column_index[c]);
     });
     values.resize(rows.size());
     id.n            = static_cast<MUMPS_INT>(A.NumGlobalRows64());
@@ -590,10 +609,15 @@ namespace viscoslide
       {
         const unsigned int       n = b ? k + 1 : k;
         LAPACKFullMatrix<double> K(n, n);
-        const auto              &S = direct.schur_complement();
-        for (unsigned int i = 0; i < k; ++i)
-          for (unsigned int j = 0; j < k; ++j)
-            K(i, j) = S[i * k + j];
+        // S comes by rows and K is stored by columns: copied in tiles that
+        // stay in the cache on both sides.
+        const auto        &S    = direct.schur_complement();
+        const unsigned int tile = 64;
+        for (unsigned int i0 = 0; i0 < k; i0 += tile)
+          for (unsigned int j0 = 0; j0 < k; j0 += tile)
+            for (unsigned int j = j0; j < std::min(j0 + tile, k); ++j)
+              for (unsigned int i = i0; i < std::min(i0 + tile, k); ++i)
+                K(i, j) = S[i * k + j];
         const auto &change = terms.change;
         for (unsigned int e = 0; e < change.size(); e += 3)
           K(change[e], change[e + 1]) += change[e + 2];

@@ -307,7 +307,6 @@ namespace viscoslide
     {
       WindowTerms W;
       W.rhs.reinit(k);
-      W.tangent.reinit(k, k);
       W.border.reinit(k);
       const unsigned int  m = faces.m;
       std::vector<int>    p(m);
@@ -339,7 +338,9 @@ namespace viscoslide
                     W.border(p[i]) += dp_dg * phi[i] * JxW;
                     for (unsigned int j = 0; j < m; ++j)
                       if (p[j] >= 0)
-                        W.tangent(p[i], p[j]) += dp_dg * phi[i] * phi[j] * JxW;
+                        W.tangent.push_back({static_cast<unsigned int>(p[i]),
+                                             static_cast<unsigned int>(p[j]),
+                                             dp_dg * phi[i] * phi[j] * JxW});
                   }
             }
         }

@@ -165,12 +165,12 @@ main(int argc, char **argv)
                                                const double          t) {
               viscoslide::WindowTerms W;
               W.rhs.reinit(k);
-              W.tangent.reinit(k, k);
               W.border.reinit(k);
               for (unsigned int i = 0; i < k; ++i)
                 {
-                  W.rhs(i)        = -cube(x_T(i) + t);
-                  W.tangent(i, i) = W.border(i) = slope(x_T(i) + t);
+                  W.rhs(i)    = -cube(x_T(i) + t);
+                  W.border(i) = slope(x_T(i) + t);
+                  W.tangent.push_back({i, i, W.border(i)});
                   W.force += cube(x_T(i) + t);
                   W.stiffness += slope(x_T(i) + t);
                 }

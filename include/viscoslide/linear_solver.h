@@ -95,9 +95,16 @@ namespace viscoslide
   // substitutions.
   struct WindowTerms
   {
-    dealii::Vector<double> rhs;     // their part of -R on the rows of T
-    FullMatrix<double>     tangent; // -d rhs / d x_T
-    dealii::Vector<double> border;  // b_T = -d rhs / d delta
+    dealii::Vector<double> rhs; // their part of -R on the rows of T
+    // -d rhs / d x_T by its entries, which may repeat: a face couples only
+    // its own unknowns, so a dense k x k matrix would be nearly empty.
+    struct Entry
+    {
+      unsigned int row, column;
+      double       value;
+    };
+    std::vector<Entry>     tangent;
+    dealii::Vector<double> border; // b_T = -d rhs / d delta
     // Their part of G = F_n - target (up to a constant), and dG / d delta.
     double force = 0., stiffness = 0.;
   };

@@ -43,6 +43,19 @@ namespace viscoslide
       unsigned int           iterations = 0;
     };
 
+    // The top-left k x k block of `from` into `to`, column by column, as
+    // both are stored.
+    void
+    copy_top_left(const LAPACKFullMatrix<double> &from,
+                  const unsigned int              k,
+                  LAPACKFullMatrix<double>       &to)
+    {
+      for (unsigned int j = 0; j < k; ++j)
+        for (unsigned int i = 0; i < k; ++i)
+          to(i, j) = from(i, j);
+    }
+
+
     // The Jacobian of the reduced system of T: the bulk's reduced operator
     // and the surface tangent, bordered under force control by b_T and
     // dG/d delta = d.
@@ -54,9 +67,7 @@ namespace viscoslide
     {
       const unsigned int       k = bulk.m(), n = bordered ? k + 1 : k;
       LAPACKFullMatrix<double> J(n, n);
-      for (unsigned int j = 0; j < k; ++j) // by columns, as stored
-        for (unsigned int i = 0; i < k; ++i)
-          J(i, j) = bulk(i, j);
+      copy_top_left(bulk, k, J);
       for (const auto &e : W.tangent)
         J(e.row, e.column) += e.value;
       if (bordered)
@@ -93,9 +104,7 @@ namespace viscoslide
       const WindowTerms at_start = model.terms(s.x, 0.);
       // The bulk's reduced operator: S less the surface tangent it holds.
       LAPACKFullMatrix<double> bulk(k, k);
-      for (unsigned int j = 0; j < k; ++j)
-        for (unsigned int i = 0; i < k; ++i)
-          bulk(i, j) = K(i, j);
+      copy_top_left(K, k, bulk);
       for (const auto &e : at_start.tangent)
         bulk(e.row, e.column) -= e.value;
 

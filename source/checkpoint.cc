@@ -15,7 +15,9 @@ namespace viscoslide
     bool
     exists(const std::string &directory)
     {
-      return fs::exists(fs::path(directory) / "checkpoint" / "state.bin");
+      const fs::path top = directory;
+      return fs::exists(top / "checkpoint" / "state.bin") ||
+             fs::exists(top / "checkpoint.old" / "state.bin");
     }
 
 
@@ -45,7 +47,12 @@ namespace viscoslide
         {
           write_atomically((tmp / "state.bin").string(), state);
           if (fs::exists(dir))
-            fs::rename(dir, old);
+            {
+              // A kill after the previous commit's second rename left an
+              // old folder, which would block this rename.
+              fs::remove_all(old);
+              fs::rename(dir, old);
+            }
           fs::rename(tmp, dir);
           fs::remove_all(old);
         }
@@ -70,6 +77,16 @@ namespace viscoslide
       contents << in.rdbuf();
       state = contents.str();
       return dir.string();
+    }
+
+
+    void
+    remove(const std::string &directory, MPI_Comm comm)
+    {
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        for (const char *name :
+             {"checkpoint", "checkpoint.old", "checkpoint.tmp"})
+          fs::remove_all(fs::path(directory) / name);
     }
   } // namespace Checkpoint
 } // namespace viscoslide

@@ -14,7 +14,8 @@ namespace viscoslide
 {
   namespace Checkpoint
   {
-    // Whether the run in `directory` has a checkpoint to resume from.
+    // Whether the run in `directory` has a checkpoint to resume from (also
+    // one left as checkpoint.old by a kill between the two renames).
     bool
     exists(const std::string &directory);
 
@@ -35,6 +36,11 @@ namespace viscoslide
     // contents of its state.bin; throws if there is none.
     std::string
     open(const std::string &directory, std::string &state, MPI_Comm comm);
+
+    // Removes the checkpoint of a finished run, with any folder a kill
+    // left behind.
+    void
+    remove(const std::string &directory, MPI_Comm comm);
   } // namespace Checkpoint
 } // namespace viscoslide
 

@@ -4,6 +4,7 @@
 
 #include <deal.II/fe/fe_q.h>
 
+#include <viscoslide/checkpoint.h>
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/mesh.h>
 
@@ -351,8 +352,7 @@ namespace viscoslide
           write_fields();
       }
     // A finished run needs its checkpoint no more.
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::filesystem::remove_all(writer.path("checkpoint"));
+    Checkpoint::remove(writer.path(""), mpi_communicator);
     timer.print_wall_time_statistics(mpi_communicator);
   }
 } // namespace viscoslide

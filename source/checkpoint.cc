@@ -83,10 +83,15 @@ namespace viscoslide
     void
     remove(const std::string &directory, MPI_Comm comm)
     {
+      // state.bin goes first, so that a kill during the removal never
+      // leaves a folder that exists() takes for a complete checkpoint.
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         for (const char *name :
-             {"checkpoint", "checkpoint.old", "checkpoint.tmp"})
-          fs::remove_all(fs::path(directory) / name);
+             {"checkpoint.old", "checkpoint", "checkpoint.tmp"})
+          {
+            fs::remove(fs::path(directory) / name / "state.bin");
+            fs::remove_all(fs::path(directory) / name);
+          }
     }
   } // namespace Checkpoint
 } // namespace viscoslide

@@ -83,9 +83,7 @@ namespace viscoslide
       assemble_bulk();
     TimerOutput::Scope t(timer, with_matrix ? "assemble" : "assemble residual");
     if (with_matrix)
-      {
-        linear_solver.load_bulk(bulk_matrix, system_matrix, current.dt);
-      }
+      linear_solver.load_bulk(bulk_matrix, system_matrix, current.dt);
     system_rhs = 0;
     coupling.start_assembly();
 

@@ -148,9 +148,7 @@ namespace viscoslide
                          with_matrix ? "steady: assemble"
                                      : "steady: assemble residual");
     if (with_matrix)
-      {
-        linear_solver.load_bulk(bulk_matrix, system_matrix, V_hat);
-      }
+      linear_solver.load_bulk(bulk_matrix, system_matrix, V_hat);
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     x = solution;
     bulk_matrix.vmult(system_rhs, x);
@@ -456,16 +454,18 @@ namespace viscoslide
     const auto [known, is_new] = scratch.block_of_pair.try_emplace(pair);
     auto &block                = known->second;
     if (is_new)
-      face_block(cell,
-                 face_no,
-                 subface_no,
-                 neighbor,
-                 neighbor_face_no,
-                 neighbor_subface_no,
-                 coefficients,
-                 scratch,
-                 block.upwind_is_mine,
-                 block.matrix);
+      {
+        scratch.interface_values.reinit(cell,
+                                        face_no,
+                                        subface_no,
+                                        neighbor,
+                                        neighbor_face_no,
+                                        neighbor_subface_no);
+        face_block(scratch.interface_values,
+                   coefficients,
+                   block.upwind_is_mine,
+                   block.matrix);
+      }
 
     // Rows: the strain dofs of `cell`; columns: those of the upwind cell.
     std::vector<types::global_dof_index> mine_dofs(fe.n_dofs_per_cell()),
@@ -485,25 +485,11 @@ namespace viscoslide
 
 
   void
-  SteadyStateSolver::face_block(
-    const DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                           face_no,
-    const unsigned int                           subface_no,
-    const DoFHandler<dim>::active_cell_iterator &neighbor,
-    const unsigned int                           neighbor_face_no,
-    const unsigned int                           neighbor_subface_no,
-    const AssemblyCoefficients                  &coefficients,
-    AssemblyScratch                             &scratch,
-    bool                                        &upwind_is_mine,
-    FullMatrix<double>                          &matrix) const
+  SteadyStateSolver::face_block(const FEInterfaceValues<dim> &fe_iv,
+                                const AssemblyCoefficients   &coefficients,
+                                bool                         &upwind_is_mine,
+                                FullMatrix<double>           &matrix) const
   {
-    FEInterfaceValues<dim> &fe_iv = scratch.interface_values;
-    fe_iv.reinit(cell,
-                 face_no,
-                 subface_no,
-                 neighbor,
-                 neighbor_face_no,
-                 neighbor_subface_no);
     // The faces are straight: beta . n has one sign on a face.
     upwind_is_mine          = fe_iv.normal(0)[0] < 0; // beta . n > 0
     const auto &mine        = fe_iv.get_fe_face_values(0);

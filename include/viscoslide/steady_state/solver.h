@@ -29,6 +29,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/fe/fe_system.h>
 
 #include <deal.II/lac/affine_constraints.h>
@@ -199,19 +200,13 @@ namespace viscoslide
                        const AssemblyCoefficients &coefficients,
                        AssemblyScratch            &scratch,
                        AssemblyCopy               &copy) const;
-    // The flux block of assemble_interface(), and on which side the
-    // upwind cell lies.
+    // The flux block of assemble_interface() on the face where `fe_iv`
+    // stands, and on which side the upwind cell lies.
     void
-    face_block(const DoFHandler<dim>::active_cell_iterator &cell,
-               unsigned int                                 face_no,
-               unsigned int                                 subface_no,
-               const DoFHandler<dim>::active_cell_iterator &neighbor,
-               unsigned int                                 neighbor_face_no,
-               unsigned int                                 neighbor_subface_no,
-               const AssemblyCoefficients                  &coefficients,
-               AssemblyScratch                             &scratch,
-               bool                                        &upwind_is_mine,
-               FullMatrix<double>                          &matrix) const;
+    face_block(const FEInterfaceValues<dim> &fe_iv,
+               const AssemblyCoefficients   &coefficients,
+               bool                         &upwind_is_mine,
+               FullMatrix<double>           &matrix) const;
     // [solver.cc]
     void
     solve_newton_system();

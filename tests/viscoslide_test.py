@@ -1,37 +1,28 @@
-"""Helpers shared by the tests' NAME.check scripts (standard library only)."""
-import csv
-import math
+"""The harness of the tests' NAME.check scripts: running viscoslide on a
+parameter text and a numdiff-friendly summary (Checker). Tables are read
+and parameter files changed by the viscoslide package (python/viscoslide:
+tables.read, prm.override), which this module puts on sys.path from the
+checkout it sits in, so the checks use that checkout's package whether or
+not scripts/setup made it importable. Standard library only."""
 import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'python'))
+from viscoslide import prm, tables  # noqa: E402  (re-exported to the checks)
 
-def read_csv(path):
-    """Rows of a viscoslide CSV as dicts of floats (strings left as is)."""
-    with open(path) as f:
-        lines = [l for l in f if not l.startswith('#')]
-    rows = []
-    for r in csv.DictReader(lines):
-        row = {}
-        for k, v in r.items():
-            try:
-                row[k] = float(v)
-            except ValueError:
-                row[k] = v
-        rows.append(row)
-    return rows
+read_csv = tables.read
 
 
 def run(viscoslide, prm_text, work_dir, name, nproc=1, mpiexec='mpirun'):
     """Writes NAME.prm into work_dir and runs viscoslide on it there."""
-    prm = os.path.join(work_dir, name + '.prm')
-    with open(prm, 'w') as f:
+    path = os.path.join(work_dir, name + '.prm')
+    with open(path, 'w') as f:
         f.write(prm_text)
-    cmd = [viscoslide, '--overwrite', prm]
+    cmd = [viscoslide, '--overwrite', path]
     if nproc > 1:
         cmd = [mpiexec, '-np', str(nproc)] + cmd
-    p = subprocess.run(cmd, cwd=work_dir, capture_output=True, text=True)
-    return p
+    return subprocess.run(cmd, cwd=work_dir, capture_output=True, text=True)
 
 
 class Checker:

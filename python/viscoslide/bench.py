@@ -1,0 +1,243 @@
+"""The benchmarks of doc/benchmark.md (not tests): viscoslide run on a
+parameter file with a few entries changed, timed, and its tables
+summarised. Each benchmark was a bash script with a sed edit of the file
+and an inline Python summary; here they share the checkout, the timed
+run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
+
+    scripts/bench [prm]                        approach()
+    scripts/bench_sliding [solver] [prm] ["V_hat list"] ["procs"]
+                                               sliding()
+    scripts/bench_curve ["transient speeds"] [n_speeds] [prm] [V_min] [V_max]
+                                               curve()
+    scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
+                                               steady_curve()
+
+Each runs in the checkout (paths are relative to it, as the scripts'
+`cd` made them), builds it first with scripts/setup if there is no
+build/viscoslide, and lets mpirun run as root."""
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+from . import prm, tables
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+VISCOSLIDE = 'build/viscoslide'
+
+
+def prepare():
+    """Into the checkout, built, with mpirun allowed to run as root."""
+    os.chdir(ROOT)
+    if not os.access(VISCOSLIDE, os.X_OK):
+        subprocess.run(['scripts/setup'], check=True)
+    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+
+
+def timed_run(command, log):
+    """Runs command with its output into the file log: (exit code, wall s)."""
+    start = time.time()
+    with open(log, 'w') as f:
+        code = subprocess.run(command, stdout=f, stderr=subprocess.STDOUT).returncode
+    return code, time.time() - start
+
+
+def mpirun(np, path):
+    return ['mpirun', '-np', str(np), VISCOSLIDE, path]
+
+
+def rows(path, text=True):
+    """The table's rows (cells as written), none where there is no table."""
+    return tables.read(path, text=text) if os.path.exists(path) else []
+
+
+def approach(argv):
+    """The main example on 1 and 2 MPI processes: wall time, final n_dofs,
+    steps and Newton iterations per step."""
+    prepare()
+    source = argv[0] if argv else 'parameter_files/approach_hold_retract.prm'
+    work = tempfile.mkdtemp()
+    print(f"{'procs':<6} {'wall_s':>10} {'n_dofs':>8} {'steps':>6} {'newton/step':>14}")
+    for np in (1, 2):
+        path = prm.override_file(source, os.path.join(work, 'run.prm'),
+                                 {'Output/Output directory': f'{work}/np{np}'})
+        code, wall = timed_run(mpirun(np, path), os.path.join(work, f'np{np}.log'))
+        if code:
+            sys.exit(code)
+        r = rows(os.path.join(work, f'np{np}', 'approach.csv'))
+        its = sum(int(x['newton_iterations']) for x in r)
+        print(f"{np:<6} {wall:10.1f} {r[-1]['n_dofs']:>8} {len(r):6d} {its / len(r):14.1f}")
+    shutil.rmtree(work)
+
+
+def sliding(argv):
+    """Steady sliding per V_hat and process count: sliding distance and
+    steps to steady state, n_dofs, Newton iterations per step, wall time,
+    the steady mu and L_hat."""
+    prepare()
+    solver = argv[0] if len(argv) > 0 else 'transient'
+    source = argv[1] if len(argv) > 1 else 'parameter_files/bench_sliding_transient.prm'
+    speeds = (argv[2] if len(argv) > 2 else '0.1 1 10 100').split()
+    procs = (argv[3] if len(argv) > 3 else '1 2').split()
+    work = tempfile.mkdtemp()
+    print(f"{'solver':<13} {'V_hat':>7} {'procs':>5} {'distance':>12} {'steps':>6} {'n_dofs':>8} "
+          f"{'newton/step':>12} {'wall_s':>9} {'mu':>10} {'L_hat':>10} {'steady':>6}")
+    for v in speeds:
+        for np in procs:
+            out = f'{work}/V{v}-np{np}'
+            path = prm.override_file(source, os.path.join(work, 'run.prm'),
+                                     {'Output/Output directory': out, 'Sliding/Sliding speed': v,
+                                      'Sliding/Solver': solver})
+            _, wall = timed_run(mpirun(np, path), out + '.log')
+            ss = rows(os.path.join(out, 'steady_state.csv'))
+            # transient: one history row per time step; steady-state: one
+            # continuation row per speed (its steps are the continuation steps)
+            hist = rows(os.path.join(out, 'history.csv')) or rows(os.path.join(out, 'continuation.csv'))
+            steps = len(hist)
+            its = sum(int(r['newton_iterations']) for r in hist) / steps if steps else float('nan')
+            dofs = hist[-1]['n_dofs'] if hist else '-'
+            if ss:
+                r = ss[0]
+                print(f"{solver:<13} {v:>7} {np:>5} {float(r['sliding_distance_over_eps']):12.0f} "
+                      f"{steps:6d} {dofs:>8} {its:12.1f} {wall:9.1f} {float(r['mu']):10.4g} "
+                      f"{float(r['L_hat']):10.4g} {r['steady']:>6}")
+            else:
+                print(f"{solver:<13} {v:>7} {np:>5} failed: see {out}.log")
+    print(f'logs and outputs in {work}')
+
+
+def log_speeds(n, vmin, vmax):
+    """n speeds evenly spaced in log V_hat from vmin to vmax, 4 digits."""
+    a, b = math.log10(vmin), math.log10(vmax)
+    return ['%.4g' % (10 ** (a + (b - a) * k / (n - 1))) for k in range(n)]
+
+
+def curve(argv):
+    """One mu(V_hat) curve by the steady-state solver (one run along all
+    speeds) against the transient solver (one run per listed speed): mu
+    and L_hat of both per speed, their differences, the wall times and
+    their ratio."""
+    prepare()
+    n = int(argv[1]) if len(argv) > 1 else 25
+    source = argv[2] if len(argv) > 2 else 'parameter_files/bench_sliding.prm'
+    vmin = float(argv[3]) if len(argv) > 3 else 0.01
+    vmax = float(argv[4]) if len(argv) > 4 else 1000
+    speeds = log_speeds(n, vmin, vmax)
+    transient = argv[0].split() if argv else speeds  # "" : steady-state only
+    work = tempfile.mkdtemp()
+    wall = {}
+
+    def run(name, solver, v):
+        path = prm.override_file(source, os.path.join(work, name + '.prm'),
+                                 {'Output/Output directory': f'{work}/{name}',
+                                  'Sliding/Sliding speed': v, 'Sliding/Solver': solver})
+        wall[name] = timed_run([VISCOSLIDE, path], os.path.join(work, name + '.log'))[1]
+
+    run('steady', 'steady-state', ', '.join(speeds))
+    for v in transient:
+        run('transient_' + v, 'transient', v)
+    print_curve(work, n, transient, wall)
+
+
+def print_curve(work, n, speeds, wall):
+    table = lambda d: rows(os.path.join(work, d, 'steady_state.csv'))
+    steady = table('steady')
+    t_steady = wall['steady']
+    print(f"steady-state: {len(steady)} speeds (of {n}) in {t_steady:.0f} s, "
+          f"{sum(r['steady'] == '1' for r in steady)} converged")
+    print(f"{'V_hat':>9} {'mu_ss':>10} {'mu_tr':>10} {'dmu':>8} {'L_ss':>9} {'L_tr':>9} {'dL':>8} {'tr_steady':>9} {'tr_wall_s':>9}")
+    t_tr = 0.
+    for v in speeds:
+        tr = table('transient_' + v)
+        t_tr += wall['transient_' + v]
+        ss = [r for r in steady if abs(float(r['V_hat']) / float(v) - 1) < 1e-3]
+        if not tr or not ss:
+            print(f"{v:>9} missing (see {work})")
+            continue
+        a, b = ss[0], tr[0]
+        dmu = float(b['mu']) / float(a['mu']) - 1
+        dL = float(b['L_hat']) / float(a['L_hat']) - 1
+        print(f"{v:>9} {float(a['mu']):10.5g} {float(b['mu']):10.5g} {dmu:8.2%} {float(a['L_hat']):9.5g} "
+              f"{float(b['L_hat']):9.5g} {dL:8.2%} {b['steady']:>9} {wall['transient_' + v]:9.0f}")
+    if speeds:
+        if len(speeds) == n:
+            print(f"whole curve: transient {t_tr:.0f} s, steady-state {t_steady:.0f} s, ratio {t_tr / t_steady:.1f}")
+        else:
+            print(f"transient at {len(speeds)} of {n} speeds only: {t_tr / len(speeds):.0f} s per speed, "
+                  f"steady-state {t_steady / n:.0f} s per speed (whole curve / {n}); "
+                  f"ratio per speed {t_tr / len(speeds) / (t_steady / n):.1f} (an estimate of the "
+                  f"whole-curve ratio, not a measurement of it)")
+    print(f"outputs and logs in {work}")
+
+
+def steady_curve(argv):
+    """One mu(V_hat) curve of the Fig. 9b study at one load by the
+    steady-state solver, approach included: the wall time, the solver's
+    timer sections and, given a reference steady_state.csv, the largest
+    relative change of each column against it. The environment may set
+    GRADING (Mesh/Mesh grading) and SPEEDS (Sliding/Sliding speed)."""
+    prepare()
+    load, muT, cell, np, reference, keep = (argv + ['0.134', '6.08', '1', '1', '', ''][len(argv):])[:6]
+    work = tempfile.mkdtemp()
+    changes = {'Output/Output directory': f'{work}/out', 'Sweep/Loads': load,
+               'Adhesion/Tabor parameter': muT, 'Mesh/Finest surface cell': cell}
+    if os.environ.get('GRADING'):
+        changes['Mesh/Mesh grading'] = os.environ['GRADING']
+    if os.environ.get('SPEEDS'):
+        changes['Sliding/Sliding speed'] = os.environ['SPEEDS']
+    path = prm.override_file('parameter_files/fig09b_friction_force_control.prm',
+                             os.path.join(work, 'run.prm'), changes)
+    log = os.path.join(work, 'log')
+    code, wall = timed_run(mpirun(np, path), log)
+    lines = open(log).read().splitlines()
+    if code:
+        print('\n'.join(lines[-20:]))
+        sys.exit(1)
+    csv = sorted((os.path.join(d, 'steady_state.csv') for d, _, files in os.walk(f'{work}/out')
+                  if 'steady_state.csv' in files), key=lambda p: p.count(os.sep))[0]
+    if keep:
+        shutil.copy(csv, keep)
+    print(f"F_hat {load}, muT {muT}, finest cell {cell} eps, {np} process(es): wall {wall:.1f} s")
+    timers = next((i for i, l in enumerate(lines) if l.startswith('+' + '-' * 10)), len(lines))
+    print(''.join(l + '\n' for l in lines[timers:] if l.startswith('|')), end='')
+    speeds = [l for l in lines if 'steady V_hat' in l]
+    if speeds:
+        print(speeds[-1])
+    compare_columns(csv, reference)
+    shutil.rmtree(work)
+
+
+def compare_columns(path, reference):
+    """Rows and converged rows of a table; with a reference table, the
+    largest relative change of each main column against it."""
+    now = rows(path)
+    print(f"{len(now)} rows, {sum(r['steady'] == '1' for r in now)} steady")
+    if not reference:
+        return
+    ref = rows(reference)
+    if len(ref) != len(now):
+        print(f"reference has {len(ref)} rows")
+        return
+    for c in ('mu', 'mu_energy', 'L_hat', 'delta_hat', 'F_t_contact_set_hat', 'F_t_hat', 'F_n_hat'):
+        if c not in now[0] or c not in ref[0]:
+            continue
+        d = [abs(float(a[c]) / float(b[c]) - 1) for a, b in zip(now, ref) if float(b[c]) != 0]
+        i = max(range(len(d)), key=d.__getitem__)
+        print(f"  {c:10s} largest relative change {d[i]:.2e} (row {i}, V_hat {now[i]['V_hat']})")
+
+
+COMMANDS = {'approach': approach, 'sliding': sliding, 'curve': curve, 'steady_curve': steady_curve}
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if not argv or argv[0] not in COMMANDS:
+        sys.exit(__doc__)
+    COMMANDS[argv[0]](argv[1:])
+
+
+if __name__ == '__main__':
+    main()

@@ -40,3 +40,34 @@ def steady(row):
     """Whether a row is a converged steady state (steady = 1); a table
     without the column counts as steady."""
     return row.get('steady', 1) not in (0, '0')
+
+
+def same_numbers(path_a, path_b, tolerance, floor=1e-12, require_rows=False):
+    """Whether two tables hold the same rows: every number within tolerance
+    relative (differences below floor absolute, round-off of quantities
+    zero by symmetry, not counted), every word equal. A missing table has
+    no rows; with require_rows an empty pair fails too. (ok, detail)."""
+    a, b = (_rows_as_written(p) for p in (path_a, path_b))
+    if len(a) != len(b) or (require_rows and not a):
+        return False, f'{len(b)} rows against {len(a)}'
+    worst = 0.
+    for x, y in zip(a, b):
+        for u, v in zip(x.strip().split(','), y.strip().split(',')):
+            try:
+                u, v = float(u), float(v)
+            except ValueError:
+                if u != v:
+                    return False, f'{u} != {v}'
+                continue
+            if abs(u - v) > floor:
+                worst = max(worst, abs(u - v) / max(abs(u), abs(v)))
+    return worst <= tolerance, (f'{len(a)} rows, largest relative difference {worst:.1e} '
+                                f'(tolerance {tolerance:g})')
+
+
+def _rows_as_written(path):
+    """The data lines of a table (no comments, no header); none if missing."""
+    try:
+        return data_lines(path)[1:]
+    except OSError:
+        return []

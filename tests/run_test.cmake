@@ -1,10 +1,16 @@
-# Runs one test: viscoslide on NAME.prm (if there is one; otherwise the
-# check runs everything itself), then CHECK.check (CHECK defaults to NAME),
-# then numdiff of the check's summary against the stored NAME.output.
+# Runs one test (tests/CMakeLists.txt): viscoslide on NAME.prm, unless the
+# test is RUNS_ITSELF (its check makes every run), then CHECK.check (CHECK
+# defaults to NAME) with the arguments WORK_DIR VISCOSLIDE MPIEXEC
+# SOURCE_DIR, then numdiff of the check's summary against the stored
+# NAME.output.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
-if(EXISTS ${SOURCE_DIR}/${NAME}.prm)
+if(NOT RUNS_ITSELF)
+  if(NOT EXISTS ${SOURCE_DIR}/${NAME}.prm)
+    message(FATAL_ERROR "${NAME}: no ${NAME}.prm to run (a test whose check "
+      "makes every run is declared RUNS_ITSELF)")
+  endif()
   if(NPROC GREATER 1)
     set(_cmd ${MPIEXEC} -np ${NPROC} ${VISCOSLIDE})
   else()

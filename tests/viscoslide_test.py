@@ -1,5 +1,6 @@
-"""The harness of the tests' NAME.check scripts: running viscoslide on a
-parameter text and a numdiff-friendly summary (Checker). Tables are read
+"""The harness of the tests' NAME.check scripts: the test's input
+tests/NAME.prm (test_input), running viscoslide on a parameter text and a
+numdiff-friendly summary (Checker). Tables are read
 and parameter files changed by the viscoslide package (python/viscoslide:
 tables.read, prm.override), which this module puts on sys.path from the
 checkout it sits in, so the checks use that checkout's package whether or
@@ -12,6 +13,15 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'
 from viscoslide import prm, tables  # noqa: E402  (re-exported to the checks)
 
 read_csv = tables.read
+
+
+def test_input(work, source):
+    """The text of the test's input, tests/NAME.prm in the tests' folder
+    source (argv[4]), NAME the test's name: that of its work folder work
+    (argv[1])."""
+    name = os.path.basename(os.path.normpath(work))
+    with open(os.path.join(source, name + '.prm')) as f:
+        return f.read()
 
 
 def run(viscoslide, prm_text, work_dir, name, nproc=1, mpiexec='mpirun'):

@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <viscoslide/boundary_element/solver.h>
+#include <viscoslide/case_folder.h>
 #include <viscoslide/case_lock.h>
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/driver.h>
@@ -10,6 +11,7 @@
 #include <viscoslide/steady_state_table.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -23,362 +25,7 @@ namespace viscoslide
   namespace
   {
     namespace fs = std::filesystem;
-
-    struct Setting
-    {
-      std::string section, entry, value;
-    };
-
-    // One run of a sweep: the entries it changes in the parameter file, and
-    // the folder (relative to the Output directory; empty for a run that
-    // is not a sweep).
-    struct Case
-    {
-      std::string               name;
-      std::vector<Setting>      settings;
-      Parameters::AllParameters parameters;
-      std::string               parameter_text; // PRM, for provenance
-      std::string               parameter_json;
-    };
-
-    // Reads `input`, applies the case's settings, checks every entry.
-    void
-    read_case(const std::string &input, Case &c)
-    {
-      ParameterHandler prm;
-      Parameters::AllParameters::declare(prm);
-      prm.parse_input(input);
-      for (const auto &s : c.settings)
-        {
-          prm.enter_subsection(s.section);
-          prm.set(s.entry, s.value);
-          prm.leave_subsection();
-        }
-      c.parameters.parse(prm);
-      std::ostringstream text, json;
-      prm.print_parameters(text, ParameterHandler::PRM);
-      prm.print_parameters(json, ParameterHandler::JSON);
-      c.parameter_text = text.str();
-      c.parameter_json = json.str();
-    }
-
-    // The product of the sweep lists. A list of one entry is applied but
-    // does not appear in the folder names.
-    std::vector<Case>
-    make_cases(const Parameters::AllParameters &p)
-    {
-      struct Choice
-      {
-        std::string          label;
-        std::vector<Setting> settings;
-      };
-      std::vector<std::vector<Choice>> dimensions;
-      // The entries of a list as the words of a parameter file.
-      auto words = [](const auto &v) {
-        std::vector<std::string> w;
-        for (const auto x : v)
-          if constexpr (std::is_same_v<decltype(x), const double>)
-            w.push_back(CsvTable::format(x));
-          else
-            w.push_back(Parameters::to_string(x));
-        return w;
-      };
-      auto add = [&](const std::vector<std::string> &values,
-                     const std::string              &prefix,
-                     auto                          &&settings_of) {
-        if (values.empty())
-          return;
-        std::vector<Choice> d;
-        for (const auto &v : values)
-          {
-            // a folder name without spaces ("flat punch" -> flat-punch)
-            std::string label = v == "half-plane" ? v : prefix + v;
-            std::replace(label.begin(), label.end(), ' ', '-');
-            d.push_back({label, settings_of(v)});
-          }
-        dimensions.push_back(d);
-      };
-      const auto &sw = p.sweep;
-      add(words(sw.tabor_parameters), "muT", [](const std::string &v) {
-        return std::vector<Setting>{{"Adhesion", "Tabor parameter", v}};
-      });
-      add(sw.thicknesses, "t", [](const std::string &v) {
-        if (v == "half-plane")
-          return std::vector<Setting>{{"Geometry", "Substrate", v}};
-        return std::vector<Setting>{{"Geometry", "Substrate", "layer"},
-                                    {"Geometry", "Layer thickness", v}};
-      });
-      add(words(sw.approaches), "delta", [](const std::string &v) {
-        return std::vector<Setting>{{"Loading", "Final approach", v},
-                                    {"Loading", "Target load", ""}};
-      });
-      add(words(sw.loads), "F", [](const std::string &v) {
-        return std::vector<Setting>{{"Loading", "Target load", v}};
-      });
-      add(words(sw.solvers), "", [](const std::string &v) {
-        return std::vector<Setting>{{"Sliding", "Solver", v}};
-      });
-      add(words(sw.controls), "", [](const std::string &v) {
-        return std::vector<Setting>{{"Sliding", "Control", v}};
-      });
-      add(words(sw.spring_stiffnesses), "k", [](const std::string &v) {
-        return std::vector<Setting>{{"Sliding", "Spring stiffness", v}};
-      });
-      add(sw.shapes, "", [](const std::string &v) {
-        return std::vector<Setting>{{"Indenter", "Shape", v}};
-      });
-      if (p.sliding.solver == Parameters::SlidingSolver::transient &&
-          p.sliding.speeds.size() > 1)
-        add(words(p.sliding.speeds), "V", [](const std::string &v) {
-          return std::vector<Setting>{{"Sliding", "Sliding speed", v}};
-        });
-
-      std::vector<Case> cases(1);
-      for (const auto &d : dimensions)
-        {
-          std::vector<Case> product;
-          for (const auto &c : cases)
-            for (const auto &choice : d)
-              {
-                Case n = c;
-                if (d.size() > 1)
-                  n.name += (n.name.empty() ? "" : "_") + choice.label;
-                n.settings.insert(n.settings.end(),
-                                  choice.settings.begin(),
-                                  choice.settings.end());
-                product.push_back(n);
-              }
-          cases = product;
-        }
-      return cases;
-    }
-
-    // A one-line reason for a CSV cell.
-    std::string
-    one_line(const std::string &text)
-    {
-      std::string s;
-      for (const char c : text)
-        s += c == ',' ? ';' : (c == '\n' || c == '\r' || c == '\t') ? ' ' : c;
-      const auto b = s.find_first_not_of(' '), e = s.find_last_not_of(' ');
-      s = b == std::string::npos ? "" : s.substr(b, e - b + 1);
-      return s.size() > 300 ? s.substr(0, 297) + "..." : s;
-    }
-
-    // The verdict of a run in its folder: "done", or "failed" and the
-    // reason on the next line.
-    void
-    write_status(const fs::path &dir, const std::string &failure)
-    {
-      write_atomically(dir / "status",
-                       failure.empty() ? std::string("done\n\n")
-                                       : "failed\n" + one_line(failure) + "\n");
-    }
-
-    std::string
-    read_file(const fs::path &path)
-    {
-      std::ifstream     in(path);
-      std::stringstream s;
-      s << in.rdbuf();
-      return s.str();
-    }
-
-    // What identifies a case's run: its parameters without comment lines
-    // (documentation, version) and without the Sweep section, whose lists
-    // span the study but do not change a case (its own values are set in
-    // their sections). So a list may grow without invalidating the cases
-    // already finished.
-    std::string
-    case_identity(const std::string &text)
-    {
-      std::istringstream in(text);
-      std::string        line, out;
-      bool               in_sweep = false;
-      while (std::getline(in, line))
-        {
-          const auto first = line.find_first_not_of(" \t");
-          if (first == std::string::npos || line[first] == '#')
-            continue;
-          const std::string trimmed = Utilities::trim(line);
-          if (trimmed == "subsection Sweep")
-            in_sweep = true;
-          else if (in_sweep && trimmed == "end")
-            in_sweep = false;
-          else if (!in_sweep)
-            out += line + "\n";
-        }
-      return out;
-    }
-
-    // Whether the run in `dir` had the case's parameters (its
-    // parameters.prm, compared as case_identity() does).
-    bool
-    ran_with(const fs::path &dir, const Case &c)
-    {
-      return case_identity(read_file(dir / "parameters.prm")) ==
-             case_identity(c.parameter_text);
-    }
-
-    struct Status
-    {
-      std::string state; // "" (not run or interrupted), "done", "failed"
-      std::string reason;
-    };
-
-    Status
-    read_status(const fs::path &folder)
-    {
-      Status        s;
-      std::ifstream in(folder / "status");
-      std::getline(in, s.state);
-      std::getline(in, s.reason);
-      return s;
-    }
-
-    // A case's verdict and when it was written: a change between choosing
-    // the cases to run and starting one means that another invocation ran
-    // it meanwhile.
-    std::string
-    status_signature(const fs::path &folder)
-    {
-      std::error_code ec;
-      const auto      time = fs::last_write_time(folder / "status", ec);
-      return ec ? std::string()
-                : read_file(folder / "status") +
-                    std::to_string(time.time_since_epoch().count());
-    }
-
-    // Beside the case's folder, which a fresh run deletes.
-    std::string
-    lock_file(const fs::path &top, const std::string &name)
-    {
-      return (top / ("." + name + ".lock")).string();
-    }
-
-    bool
-    running_elsewhere(const fs::path &top, const std::string &name)
-    {
-      try
-        {
-          return !CaseLock(lock_file(top, name)).held();
-        }
-      catch (std::exception &)
-        {
-          return false;
-        }
-    }
-
-    // Takes the lock on the first process of `comm`; every process learns
-    // the outcome (and in `error` why the lock could not be tried).
-    enum class LockState
-    {
-      held,
-      busy,
-      error
-    };
-
-    LockState
-    take_lock(std::unique_ptr<CaseLock> &lock,
-              const std::string         &file,
-              MPI_Comm                   comm,
-              std::string               &error,
-              const double               patience = 0)
-    {
-      LockState state = LockState::held;
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        try
-          {
-            lock = std::make_unique<CaseLock>(file, patience);
-            if (!lock->held())
-              state = LockState::busy;
-          }
-        catch (std::exception &e)
-          {
-            state = LockState::error;
-            error = e.what();
-          }
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      return Utilities::MPI::broadcast(comm, state, 0);
-    }
-
-    // The sweep's steady_state.csv, rebuilt from the case folders after
-    // each case: a row per case and speed, or one row naming the reason
-    // for a case that failed before writing any.
-    void
-    write_sweep_table(const fs::path &directory, const std::vector<Case> &cases)
-    {
-      const auto         columns = SteadyStateTable::columns();
-      std::ostringstream out;
-      out << "# " << version_string() << "; sweep of " << cases.size()
-          << " cases, one folder each\ncase,status,reason";
-      for (const auto &c : columns)
-        out << "," << c;
-      out << "\n";
-      for (const auto &c : cases)
-        {
-          const Status status = read_status(directory / c.name);
-          if (status.state.empty())
-            continue;
-          auto rows = CsvTable::read(directory / c.name / "steady_state.csv");
-          if (rows.empty())
-            {
-              // What is known of the case without a result.
-              const auto &p = c.parameters;
-              rows.push_back(
-                {{"control", Parameters::to_string(p.sliding.control)},
-                 {"mu_T", CsvTable::format(p.adhesion.tabor_parameter)},
-                 {"R_hat", CsvTable::format(p.adhesion.R_over_eps)},
-                 {"substrate", Parameters::to_string(p.geometry.substrate)},
-                 {"t_hat", CsvTable::format(SteadyStateTable::t_hat(p))},
-                 {"steady", "0"},
-                 {"time_constant",
-                  Parameters::to_string(p.material.time_constant)},
-                 {"solver", Parameters::to_string(p.sliding.solver)}});
-            }
-          for (auto &row : rows)
-            {
-              out << c.name << "," << status.state << "," << status.reason;
-              for (const auto &col : columns)
-                out << "," << row[col];
-              out << "\n";
-            }
-        }
-      if (read_file(directory / "steady_state.csv") != out.str())
-        write_atomically(directory / "steady_state.csv", out.str());
-    }
-
-    // parameters.prm (with the version), parameters.json and version.txt
-    // in the case's folder.
-    void
-    write_provenance(const Case &c, MPI_Comm comm)
-    {
-      std::string error;
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        try
-          {
-            const fs::path dir(c.parameters.output.directory);
-            write_atomically(dir / "parameters.prm",
-                             "# " + version_string() + "\n" + c.parameter_text);
-            write_atomically(dir / "parameters.json", c.parameter_json);
-            write_atomically(dir / "version.txt", version_string() + "\n");
-            // What the program changed in the case (the block fitted to
-            // the wake), next to the parameters that do not show it.
-            std::string notes;
-            for (const auto &note : c.parameters.notes)
-              notes += note + "\n";
-            if (!notes.empty())
-              write_atomically(dir / "notes.txt", notes);
-          }
-        catch (std::exception &e)
-          {
-            error = e.what();
-          }
-      // every process leaves together
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      if (!error.empty())
-        throw std::runtime_error(error);
-    }
+    using namespace Study;
 
     // The solver of one case, its screen output copied into log.txt;
     // returns "" or the reason it failed. Failures of the solver are
@@ -402,11 +49,12 @@ namespace viscoslide
         }
       try
         {
+          CaseParts parts(c.parameters, comm, &progress);
           if (c.parameters.sliding.solver ==
               Parameters::SlidingSolver::boundary_element)
-            BoundaryElementSolver(c.parameters, comm, &progress).run();
+            BoundaryElementSolver(parts).run();
           else
-            ContactProblem(c.parameters, comm, &progress).run(resume);
+            ContactProblem(parts).run(resume);
           return "";
         }
       catch (ExceptionBase &e)
@@ -447,57 +95,6 @@ namespace viscoslide
 
   namespace
   {
-    // Reads the file and every case of its sweep. Every case is checked
-    // before any runs: a bad value in a list must not surface hours into a
-    // sweep. Returns false (after saying why) on bad input.
-    bool
-    read_cases(const std::string &input,
-               std::vector<Case> &cases,
-               fs::path          &top,
-               MPI_Comm           comm)
-    {
-      const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
-      std::string in_case;
-      auto        report = [&](const auto &print) {
-        if (!root)
-          return;
-        std::cerr << "viscoslide: error in parameter file '" << input << "'"
-                  << (in_case.empty() ? "" : ", sweep case " + in_case)
-                  << ":\n";
-        print();
-      };
-      try
-        {
-          if (!std::ifstream(input))
-            throw Parameters::ExcInvalidInput("cannot read parameter file '" +
-                                              input + "'");
-          Case base;
-          read_case(input, base);
-          cases = make_cases(base.parameters);
-          top   = base.parameters.output.directory;
-          for (auto &c : cases)
-            {
-              in_case = c.name;
-              if (!c.name.empty())
-                c.settings.push_back(
-                  {"Output", "Output directory", (top / c.name).string()});
-              read_case(input, c);
-            }
-        }
-      catch (ExceptionBase &e) // ParameterHandler's: show only its message
-        {
-          report([&] { e.print_info(std::cerr); });
-          return false;
-        }
-      catch (std::exception &e)
-        {
-          report([&] { std::cerr << e.what() << std::endl; });
-          return false;
-        }
-      return true;
-    }
-
-
     // A single run: its files go straight into the Output directory.
     int
     run_single(const Case &c, const RunOptions &options, MPI_Comm comm)
@@ -621,45 +218,62 @@ namespace viscoslide
       finished_elsewhere
     };
 
-    // Case k of a sweep in its own folder, under its lock: a case another
-    // process holds, or one that another invocation finished since the
-    // cases were chosen (its status changed from `signature`), is left
-    // alone. An interrupted case resumes from its checkpoint if asked to
-    // and its parameters are those of the file, otherwise it starts again.
-    CaseOutcome
-    run_sweep_case(const std::size_t        k,
-                   const std::vector<Case> &cases,
-                   const fs::path          &top,
-                   const std::string       &signature,
-                   const RunOptions        &options,
-                   Progress                &progress,
-                   MPI_Comm                 comm)
+    // One invocation's run of a study, as every group of its processes
+    // sees it: the cases, which of them it considers, their verdicts when
+    // it started, and when that was.
+    struct StudyRun
     {
-      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-      const Case    &c    = cases[k];
-      const fs::path dir  = top / c.name;
-      std::unique_ptr<CaseLock> lock;
-      std::string               failure;
-      const auto                state =
-        take_lock(lock, lock_file(top, c.name), comm, failure, 2);
-      if (state == LockState::busy)
-        return CaseOutcome::running_elsewhere;
-      if (Utilities::MPI::broadcast(comm,
-                                    root && state == LockState::held &&
-                                      status_signature(dir) != signature,
-                                    0))
-        return CaseOutcome::finished_elsewhere;
+      const std::vector<Case>              &cases;
+      const fs::path                       &top;
+      const std::vector<char>              &to_run;
+      const std::vector<std::string>       &signatures;
+      const RunOptions                     &options;
+      std::chrono::steady_clock::time_point start =
+        std::chrono::steady_clock::now();
 
-      progress.start_case(k + 1, c.name);
-      const bool resume = options.resume && read_status(dir).state.empty() &&
-                          ContactProblem::has_checkpoint(dir) &&
-                          ran_with(dir, c);
+      // The study's progress over every group of the invocation, e.g.
+      // "2 of 6 cases done, 3.1 min elapsed, ~6.2 min left": the cases it
+      // considers whose verdict has been written since it started.
+      std::string
+      progress() const
+      {
+        unsigned int n = 0, done = 0;
+        for (std::size_t k = 0; k < cases.size(); ++k)
+          if (to_run[k])
+            {
+              ++n;
+              const fs::path dir = top / cases[k].name;
+              done += !read_status(dir).state.empty() &&
+                      status_signature(dir) != signatures[k];
+            }
+        const double elapsed = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+        std::string text = std::to_string(done) + " of " + std::to_string(n) +
+                           " cases done, " + format_duration(elapsed) +
+                           " elapsed";
+        if (done > 0 && done < n)
+          text +=
+            ", ~" + format_duration(elapsed / done * (n - done)) + " left";
+        return text;
+      }
+    };
+
+    // Takes case k's folder for a fresh run (or keeps it to resume) and
+    // writes its provenance; returns the error, if any, on every process.
+    std::string
+    prepare_case_folder(const Case     &c,
+                        const fs::path &dir,
+                        const bool      resume,
+                        MPI_Comm        comm)
+    {
+      std::string failure;
       try
         {
           std::error_code ec; // prepare_directory() reports the failure
-          if (root && !resume && failure.empty())
+          if (Utilities::MPI::this_mpi_process(comm) == 0 && !resume)
             fs::remove_all(dir, ec);
-          if (!resume && failure.empty())
+          if (!resume)
             {
               OutputWriter::prepare_directory(dir.string(), true, comm);
               write_provenance(c, comm);
@@ -669,82 +283,130 @@ namespace viscoslide
         {
           failure = e.what();
         }
-      failure = Utilities::MPI::broadcast(comm, failure, 0);
+      return Utilities::MPI::broadcast(comm, failure, 0);
+    }
+
+    // Case k of a sweep in its own folder, under its lock: a case another
+    // process holds, or one that another invocation finished since the
+    // cases were chosen (its status changed from its signature), is left
+    // alone. An interrupted case resumes from its checkpoint if asked to
+    // and its parameters are those of the file, otherwise it starts again.
+    // `group` names the group of processes in the report (empty: one
+    // group).
+    CaseOutcome
+    run_sweep_case(const std::size_t  k,
+                   const StudyRun    &study,
+                   const std::string &group,
+                   Progress          &progress,
+                   MPI_Comm           comm)
+    {
+      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+      const Case    &c    = study.cases[k];
+      const fs::path dir  = study.top / c.name;
+      std::unique_ptr<CaseLock> lock;
+      std::string               failure;
+      const auto                state =
+        take_lock(lock, lock_file(study.top, c.name), comm, failure, 2);
+      if (state == LockState::busy)
+        return CaseOutcome::running_elsewhere;
+      if (Utilities::MPI::broadcast(comm,
+                                    root && state == LockState::held &&
+                                      status_signature(dir) !=
+                                        study.signatures[k],
+                                    0))
+        return CaseOutcome::finished_elsewhere;
+
+      progress.start_case(k + 1, c.name);
+      const bool resume =
+        study.options.resume && read_status(dir).state.empty() &&
+        ContactProblem::has_checkpoint(dir) && ran_with(dir, c);
+      if (failure.empty())
+        failure = prepare_case_folder(c, dir, resume, comm);
       if (root)
         {
-          std::cout << "\n=== case " << k + 1 << "/" << cases.size() << " "
-                    << c.name << ":";
+          std::cout << "\n=== case " << k + 1 << "/" << study.cases.size()
+                    << " " << c.name << group << ":";
           for (const auto &s : c.settings)
             if (s.section != "Output" && !s.value.empty())
               std::cout << " " << s.entry << " = " << s.value << ";";
           std::cout << std::endl;
         }
       if (failure.empty())
-        failure = run_case(c, progress, comm, resume, options);
+        failure = run_case(c, progress, comm, resume, study.options);
       if (!root)
         return CaseOutcome::ran;
       try
         {
           write_status(dir, failure);
-          write_sweep_table(top, cases);
+          write_sweep_table(study.top, study.cases);
         }
       catch (std::exception &e)
         {
           std::cerr << "viscoslide: " << e.what() << std::endl;
         }
-      std::cout << "case " << k + 1 << "/" << cases.size() << " " << c.name
-                << ": " << (failure.empty() ? "done" : "FAILED: " + failure)
-                << "  [" << progress.report(1.) << "]" << std::endl;
+      std::cout << "case " << k + 1 << "/" << study.cases.size() << " "
+                << c.name << ": "
+                << (failure.empty() ? "done" : "FAILED: " + failure) << group
+                << "  [" << study.progress() << "]" << std::endl;
       return CaseOutcome::ran;
     }
 
 
     // The cases of the sweep that this invocation considers, run by groups
     // of processes (options.jobs) side by side: each group takes the next
-    // case whose lock is free.
+    // case whose lock is free. A case another group of this invocation
+    // took is its own; only cases run or finished by another invocation
+    // are said to be skipped, once every group is done.
     void
-    run_cases(const std::vector<Case>        &cases,
-              const fs::path                 &top,
-              const std::vector<char>        &to_run,
-              const std::vector<std::string> &signatures,
-              const RunOptions               &options,
-              MPI_Comm                        comm)
+    run_cases(const StudyRun &study, MPI_Comm comm)
     {
+      const auto        &cases   = study.cases;
       const unsigned int n_procs = Utilities::MPI::n_mpi_processes(comm);
       const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-      const unsigned int jobs    = options.jobs;
+      const unsigned int jobs    = study.options.jobs;
+      const int          color   = rank * jobs / n_procs;
       MPI_Comm           group;
-      MPI_Comm_split(comm, rank * jobs / n_procs, rank, &group);
-      const bool group_root = Utilities::MPI::this_mpi_process(group) == 0;
+      MPI_Comm_split(comm, color, rank, &group);
+      const bool speaker = Utilities::MPI::this_mpi_process(group) == 0 &&
+                           (jobs == 1 || rank == 0);
+      const std::string group_name =
+        jobs > 1 ? " in group " + std::to_string(color + 1) : "";
 
-      // Each group runs about its share of the cases; the estimate of the
-      // time left is that of this group's share.
-      const unsigned int n_to_run = std::count(to_run.begin(), to_run.end(), 1);
-      Progress           progress(cases.size(), (n_to_run + jobs - 1) / jobs);
+      // The solver's own progress lines (in log.txt when jobs > 1) estimate
+      // this group's share of the cases.
+      const unsigned int n_to_run =
+        std::count(study.to_run.begin(), study.to_run.end(), 1);
+      Progress         progress(cases.size(), (n_to_run + jobs - 1) / jobs);
+      std::vector<int> ran_by(cases.size(), -1);
+      std::vector<std::pair<std::size_t, std::string>> elsewhere;
       for (std::size_t k = 0; k < cases.size(); ++k)
-        {
-          std::string said;
-          if (to_run[k])
-            switch (run_sweep_case(
-              k, cases, top, signatures[k], options, progress, group))
-              {
-                case CaseOutcome::ran:
-                  break;
-                case CaseOutcome::running_elsewhere:
-                  said = "running in another process, skipped";
-                  break;
-                case CaseOutcome::finished_elsewhere:
-                  said = "finished by another process, skipped";
-                  break;
-              }
-          else if (options.only_case == 0 || options.only_case == k + 1)
-            said = read_status(top / cases[k].name).state + " earlier, skipped";
-          if (group_root && !said.empty() && (jobs == 1 || rank == 0))
-            std::cout << "case " << k + 1 << "/" << cases.size() << " "
-                      << cases[k].name << ": " << said << std::endl;
-        }
+        if (study.to_run[k])
+          switch (run_sweep_case(k, study, group_name, progress, group))
+            {
+              case CaseOutcome::ran:
+                ran_by[k] = color;
+                break;
+              case CaseOutcome::running_elsewhere:
+                elsewhere.emplace_back(k, "running in another process");
+                break;
+              case CaseOutcome::finished_elsewhere:
+                elsewhere.emplace_back(k, "finished by another process");
+                break;
+            }
+        else if (speaker && (study.options.only_case == 0 ||
+                             study.options.only_case == k + 1))
+          std::cout << "case " << k + 1 << "/" << cases.size() << " "
+                    << cases[k].name << ": "
+                    << read_status(study.top / cases[k].name).state
+                    << " earlier, skipped" << std::endl;
       MPI_Comm_free(&group);
-      MPI_Barrier(comm);
+      MPI_Allreduce(
+        MPI_IN_PLACE, ran_by.data(), ran_by.size(), MPI_INT, MPI_MAX, comm);
+      for (const auto &[k, said] : elsewhere)
+        if (speaker && ran_by[k] < 0)
+          std::cout << "case " << k + 1 << "/" << cases.size() << " "
+                    << cases[k].name << ": " << said << ", skipped"
+                    << std::endl;
     }
 
 
@@ -791,7 +453,7 @@ namespace viscoslide
                         : "")
                   << "\nSweep of " << cases.size() << " cases into '"
                   << top.string() << "': " << n_to_run << " to run\n";
-      run_cases(cases, top, to_run, signatures, options, comm);
+      run_cases({cases, top, to_run, signatures, options}, comm);
 
       // The table also when every case was skipped, and the verdict on
       // the cases this invocation considered.

@@ -584,6 +584,39 @@ namespace viscoslide
   }
 
 
+  // The dense system on the window: the Schur complement S with the change
+  // of the present matrix from the factorized one, and with the border of
+  // force control (corner d) if asked.
+  LAPACKFullMatrix<double>
+  ReusedFactorization::window_matrix(const SurfaceTerms &terms,
+                                     const bool          bordered,
+                                     const double        d) const
+  {
+    const unsigned int       k = window_list.size();
+    LAPACKFullMatrix<double> K(bordered ? k + 1 : k, bordered ? k + 1 : k);
+    // S comes by rows and K is stored by columns: copied in tiles that
+    // stay in the cache on both sides.
+    const auto        &S    = direct.schur_complement();
+    const unsigned int tile = 64;
+    for (unsigned int i0 = 0; i0 < k; i0 += tile)
+      for (unsigned int j0 = 0; j0 < k; j0 += tile)
+        for (unsigned int j = j0; j < std::min(j0 + tile, k); ++j)
+          for (unsigned int i = i0; i < std::min(i0 + tile, k); ++i)
+            K(i, j) = S[i * k + j];
+    const auto &change = terms.change;
+    for (unsigned int e = 0; e < change.size(); e += 3)
+      K(change[e], change[e + 1]) += change[e + 2];
+    if (bordered)
+      {
+        const auto &border = terms.border;
+        for (unsigned int e = 0; e < border.size(); e += 2)
+          K(k, border[e]) = K(border[e], k) = border[e + 1];
+        K(k, k) = d;
+      }
+    return K;
+  }
+
+
   // The exact solution through the factorization of A: on the host the
   // dense system on T,
   //   [S + D   b_T] [x_T]   [r_T - A_TI A_II^-1 r_I]
@@ -616,30 +649,11 @@ namespace viscoslide
     int                       singular = 0;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        const unsigned int       n = b ? k + 1 : k;
-        LAPACKFullMatrix<double> K(n, n);
-        // S comes by rows and K is stored by columns: copied in tiles that
-        // stay in the cache on both sides.
-        const auto        &S    = direct.schur_complement();
-        const unsigned int tile = 64;
-        for (unsigned int i0 = 0; i0 < k; i0 += tile)
-          for (unsigned int j0 = 0; j0 < k; j0 += tile)
-            for (unsigned int j = j0; j < std::min(j0 + tile, k); ++j)
-              for (unsigned int i = i0; i < std::min(i0 + tile, k); ++i)
-                K(i, j) = S[i * k + j];
-        const auto &change = terms.change;
-        for (unsigned int e = 0; e < change.size(); e += 3)
-          K(change[e], change[e + 1]) += change[e + 2];
-        dealii::Vector<double> y(n);
+        LAPACKFullMatrix<double> K = window_matrix(terms, b != nullptr, d);
+        dealii::Vector<double>   y(K.m());
         std::copy(reduced.begin(), reduced.end(), y.begin());
         if (b)
-          {
-            const auto &border = terms.border;
-            for (unsigned int e = 0; e < border.size(); e += 2)
-              K(k, border[e]) = K(border[e], k) = border[e + 1];
-            K(k, k) = d;
-            y(k)    = m;
-          }
+          y(k) = m;
         try
           {
             if (model.terms)

@@ -8,6 +8,7 @@
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -45,7 +46,98 @@ namespace
     "  --print-parameters  print every entry with default and documentation\n"
     "\n"
     "Run in parallel with: mpirun -np N viscoslide FILE.prm\n";
-}
+
+  // The positive whole number after option args[i], or 0.
+  int
+  whole_number_after(const std::vector<std::string> &args, const std::size_t i)
+  {
+    try
+      {
+        return i + 1 < args.size()
+                 ? std::max(viscoslide::Utilities::string_to_int(args[i + 1]),
+                            0)
+                 : 0;
+      }
+    catch (...)
+      {
+        return 0;
+      }
+  }
+
+  // Reads the options and the parameter file's name. Returns -1 to run,
+  // otherwise the exit code after printing (help, version, the parameters,
+  // or what was wrong).
+  int
+  parse_command_line(const std::vector<std::string> &args,
+                     const bool                      root,
+                     viscoslide::RunOptions         &options,
+                     std::string                    &input)
+  {
+    using namespace viscoslide;
+    auto fail = [&](const std::string &message) {
+      if (root)
+        std::cerr << message;
+      return 1;
+    };
+    for (std::size_t i = 0; i < args.size(); ++i)
+      {
+        if (args[i] == "--help" || args[i] == "-h" || args[i] == "--version")
+          {
+            if (root)
+              std::cout << (args[i] == "--version" ? version_string() + "\n"
+                                                   : std::string(usage));
+            return 0;
+          }
+        if (args[i] == "--print-parameters")
+          {
+            ParameterHandler prm;
+            Parameters::AllParameters::declare(prm);
+            const bool json = i + 1 < args.size() && args[i + 1] == "json";
+            if (root)
+              prm.print_parameters(std::cout,
+                                   json ? ParameterHandler::JSON
+                                        : ParameterHandler::PRM);
+            return 0;
+          }
+        if (args[i] == "--overwrite")
+          options.overwrite = true;
+        else if (args[i] == "--resume")
+          options.resume = true;
+        else if (args[i] == "--dry-run")
+          options.dry_run = true;
+        else if (args[i] == "--redo")
+          {
+            if (i + 1 >= args.size() ||
+                (args[i + 1] != "failed" && args[i + 1] != "all"))
+              return fail("viscoslide: --redo needs 'failed' or 'all'\n");
+            options.redo = args[++i] == "all" ? RunOptions::Redo::all
+                                              : RunOptions::Redo::failed;
+          }
+        else if (args[i] == "--jobs" || args[i] == "--case")
+          {
+            const int n = whole_number_after(args, i);
+            if (n < 1)
+              return fail("viscoslide: " + args[i] +
+                          " needs a positive whole number\n");
+            (args[i] == "--jobs" ? options.jobs : options.only_case) = n;
+            ++i;
+          }
+        else if (!args[i].empty() && args[i][0] == '-')
+          return fail("viscoslide: unknown option '" + args[i] + "'\n\n" +
+                      usage);
+        else if (input.empty())
+          input = args[i];
+        else
+          return fail("viscoslide: more than one parameter file given\n");
+      }
+    if (input.empty())
+      return fail(usage);
+    if (options.resume && options.overwrite)
+      return fail("viscoslide: --resume continues a run, --overwrite "
+                  "starts it again: give one of them\n");
+    return -1;
+  }
+} // namespace
 
 int
 main(int argc, char *argv[])
@@ -56,8 +148,7 @@ main(int argc, char *argv[])
   MPI_Comm                         comm = MPI_COMM_WORLD;
   const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
 
-  std::vector<std::string> args(argv + 1, argv + argc);
-  RunOptions               options;
+  RunOptions options;
   for (int i = 0; i < argc; ++i)
     {
       const std::string a = argv[i];
@@ -65,101 +156,9 @@ main(int argc, char *argv[])
       options.command_line += (i ? " " : "") + (quote ? "'" + a + "'" : a);
     }
   std::string input;
-  for (std::size_t i = 0; i < args.size(); ++i)
-    {
-      if (args[i] == "--help" || args[i] == "-h")
-        {
-          if (root)
-            std::cout << usage;
-          return 0;
-        }
-      if (args[i] == "--version")
-        {
-          if (root)
-            std::cout << version_string() << std::endl;
-          return 0;
-        }
-      if (args[i] == "--print-parameters")
-        {
-          ParameterHandler prm;
-          Parameters::AllParameters::declare(prm);
-          const bool json = i + 1 < args.size() && args[i + 1] == "json";
-          if (root)
-            prm.print_parameters(std::cout,
-                                 json ? ParameterHandler::JSON
-                                      : ParameterHandler::PRM);
-          return 0;
-        }
-      if (args[i] == "--overwrite")
-        options.overwrite = true;
-      else if (args[i] == "--resume")
-        options.resume = true;
-      else if (args[i] == "--dry-run")
-        options.dry_run = true;
-      else if (args[i] == "--redo")
-        {
-          if (i + 1 >= args.size() ||
-              (args[i + 1] != "failed" && args[i + 1] != "all"))
-            {
-              if (root)
-                std::cerr << "viscoslide: --redo needs 'failed' or 'all'\n";
-              return 1;
-            }
-          options.redo = args[++i] == "all" ? RunOptions::Redo::all
-                                            : RunOptions::Redo::failed;
-        }
-      else if (args[i] == "--jobs" || args[i] == "--case")
-        {
-          const std::string option = args[i];
-          int               n      = 0;
-          try
-            {
-              n =
-                i + 1 < args.size() ? Utilities::string_to_int(args[i + 1]) : 0;
-            }
-          catch (...)
-            {
-              n = 0;
-            }
-          if (n < 1)
-            {
-              if (root)
-                std::cerr << "viscoslide: " << option
-                          << " needs a positive whole number\n";
-              return 1;
-            }
-          ++i;
-          (option == "--jobs" ? options.jobs : options.only_case) = n;
-        }
-      else if (!args[i].empty() && args[i][0] == '-')
-        {
-          if (root)
-            std::cerr << "viscoslide: unknown option '" << args[i] << "'\n\n"
-                      << usage;
-          return 1;
-        }
-      else if (input.empty())
-        input = args[i];
-      else
-        {
-          if (root)
-            std::cerr << "viscoslide: more than one parameter file given\n";
-          return 1;
-        }
-    }
-  if (input.empty())
-    {
-      if (root)
-        std::cerr << usage;
-      return 1;
-    }
-  if (options.resume && options.overwrite)
-    {
-      if (root)
-        std::cerr << "viscoslide: --resume continues a run, --overwrite "
-                     "starts it again: give one of them\n";
-      return 1;
-    }
-
+  const int   exit_code = parse_command_line(
+    std::vector<std::string>(argv + 1, argv + argc), root, options, input);
+  if (exit_code >= 0)
+    return exit_code;
   return run_parameter_file(input, options, comm);
 }

@@ -160,4 +160,153 @@ namespace viscoslide
       longest = std::max(longest, arm.tau);
     return longest;
   }
+
+
+  namespace Parameters
+  {
+    namespace
+    {
+      // A Prony term's weight and time must be positive and finite; where
+      // names the list or the file row.
+      PronyTerm
+      prony_term(const double       weight,
+                 const double       time_ratio,
+                 const std::string &where)
+      {
+        require(std::isfinite(weight) && weight > 0,
+                where + ": the weight must be a positive number");
+        require(std::isfinite(time_ratio) && time_ratio > 0,
+                where + ": the relaxation time must be a positive number");
+        return {weight, time_ratio};
+      }
+
+      std::vector<PronyTerm>
+      prony_series_from_lists(const std::string &weights,
+                              const std::string &times)
+      {
+        const auto w = Utilities::split_string_list(weights);
+        const auto t = Utilities::split_string_list(times);
+        require(w.size() == t.size(),
+                "'Material/Prony weights' has " + std::to_string(w.size()) +
+                  " entries and 'Material/Prony relaxation times' " +
+                  std::to_string(t.size()) + ": one of each per arm");
+        std::vector<PronyTerm> series;
+        for (unsigned int k = 0; k < w.size(); ++k)
+          series.push_back(
+            prony_term(to_number(w[k]),
+                       to_number(t[k]),
+                       "'Material/Prony weights' = " + weights +
+                         ", 'Prony relaxation times' = " + times + ", arm " +
+                         std::to_string(k + 1)));
+        return series;
+      }
+
+      std::vector<PronyTerm>
+      prony_series_from_file(const std::string &filename)
+      {
+        const auto columns =
+          read_csv_columns(filename,
+                           {"weight", "tau_over_tau"},
+                           "'Material/Prony file' = " + filename);
+        std::vector<PronyTerm> series;
+        for (unsigned int k = 0; k < columns[0].size(); ++k)
+          series.push_back(prony_term(columns[0][k],
+                                      columns[1][k],
+                                      "'Material/Prony file' = " + filename +
+                                        ", arm " + std::to_string(k + 1)));
+        require(!series.empty(),
+                "'Material/Prony file' = " + filename + ": no arm in the file");
+        return series;
+      }
+    } // namespace
+
+
+    void
+    Material::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("E0 over Einf",
+                        "0.1",
+                        Patterns::Double(),
+                        "Ratio of the relaxed (low-frequency) to the "
+                        "instantaneous (high-frequency) Young's modulus of "
+                        "the standard linear solid, in (0, 1]. 1 makes the "
+                        "material elastic. Einf < E0 is unphysical and "
+                        "refused.");
+      prm.declare_entry("Poisson ratio",
+                        "0.49",
+                        Patterns::Double(),
+                        "Poisson ratio, the same for both branches, in "
+                        "[0, 0.5).");
+      prm.declare_entry(
+        "Time constant",
+        "relaxation",
+        Patterns::Selection(choice_pattern<TimeConstant>()),
+        "Which time constant tau makes V_hat = V tau/eps and time_over_tau "
+        "dimensionless. 'relaxation': tau is the relaxation time of the "
+        "Maxwell arm, E(t) = E0 + (Einf - E0) exp(-t/tau) (the paper's "
+        "wording). 'retardation': tau is the creep (retardation) time "
+        "tau_c = tau_relaxation Einf/E0 of J(t) = 1/E0 - (1/E0 - 1/Einf) "
+        "exp(-t/tau_c). The choice is written into every output file.");
+      prm.declare_entry(
+        "Prony weights",
+        "",
+        Patterns::Anything(),
+        "Generalised Maxwell solid (Prony series): a comma-separated list of "
+        "positive weights w_k, one per Maxwell arm. Arm k carries the "
+        "modulus E_k = w_k (Einf - E0) / sum(w), so 'E0 over Einf' still "
+        "fixes the slow and fast limits and the weights only share out "
+        "Einf - E0; measured moduli E_k (in any unit) may be given as they "
+        "are. Empty (default): one arm, the standard linear solid of the "
+        "paper. Needs 'Prony relaxation times' of the same length; not "
+        "together with 'Prony file'.");
+      prm.declare_entry(
+        "Prony relaxation times",
+        "",
+        Patterns::Anything(),
+        "The relaxation times tau_k/tau of the arms of 'Prony weights', "
+        "positive, in units of the reference time tau of V_hat and "
+        "time_over_tau. E(t) = E0 + sum_k E_k exp(-t/tau_k).");
+      prm.declare_entry(
+        "Prony file",
+        "",
+        Patterns::Anything(),
+        "The Prony series as a CSV file (path relative to the working "
+        "directory; lines starting with # are comments) with a header "
+        "naming the columns weight and tau_over_tau, one arm per row: a "
+        "measured relaxation spectrum (weights as 'Prony weights', times "
+        "as 'Prony relaxation times'). Empty: the lists above.");
+      prm.leave_subsection();
+    }
+
+    void
+    Material::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      E0_over_Einf  = prm.get_double("E0 over Einf");
+      poisson_ratio = prm.get_double("Poisson ratio");
+      time_constant = parse_choice<TimeConstant>(prm.get("Time constant"),
+                                                 "Material/Time constant");
+      const std::string weights = prm.get("Prony weights"),
+                        times   = prm.get("Prony relaxation times"),
+                        file    = prm.get("Prony file");
+      prm.leave_subsection();
+      require(file.empty() || (weights.empty() && times.empty()),
+              "'Material/Prony file' and 'Material/Prony weights' or "
+              "'Material/Prony relaxation times' are both set: give the "
+              "series one way");
+      prony_series = file.empty() ? prony_series_from_lists(weights, times)
+                                  : prony_series_from_file(file);
+      require(prony_series.size() <= 1 ||
+                time_constant == TimeConstant::relaxation,
+              "'Material/Time constant' = retardation is defined for one "
+              "Maxwell arm only; a Prony series needs relaxation");
+      require(E0_over_Einf > 0 && E0_over_Einf <= 1,
+              entry("Material", "E0 over Einf", E0_over_Einf) +
+                " is outside (0, 1]: Einf must not be smaller than E0");
+      require(poisson_ratio >= 0 && poisson_ratio < 0.5,
+              entry("Material", "Poisson ratio", poisson_ratio) +
+                " is outside [0, 0.5)");
+    }
+  } // namespace Parameters
 } // namespace viscoslide

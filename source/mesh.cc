@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <viscoslide/mesh.h>
+#include <viscoslide/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -118,4 +119,148 @@ namespace viscoslide
       }
     return its;
   }
+
+
+  namespace Parameters
+  {
+    void
+    Geometry::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Substrate",
+                        "half-plane",
+                        Patterns::Selection(choice_pattern<Substrate>()),
+                        "'half-plane': a block of Domain width x Domain "
+                        "height, large against the contact, base fixed. "
+                        "'layer': a layer of Layer thickness bonded to a "
+                        "rigid base.");
+      prm.declare_entry("Layer thickness",
+                        "100",
+                        Patterns::Double(),
+                        "t_hat = t/eps, used with Substrate = layer.");
+      prm.declare_entry("Domain width",
+                        "20000",
+                        Patterns::Double(),
+                        "W/eps, the lateral extent of the block (x from "
+                        "-W/2 to W/2). Lateral sides are traction free.");
+      prm.declare_entry("Domain height",
+                        "10000",
+                        Patterns::Double(),
+                        "H/eps of the half-plane block. Under displacement "
+                        "control the approach delta depends on it "
+                        "logarithmically (plane strain).");
+      prm.declare_entry(
+        "Wake lengths",
+        "20",
+        Patterns::Double(0.),
+        "The steady-state solver needs the wake, the solid relaxing "
+        "over V tau_c behind the contact (tau_c the creep time), inside "
+        "its block, or it underestimates the friction at high speed. "
+        "Under force control it widens the block to at least this many "
+        "wake lengths of the fastest listed speed and deepens a "
+        "half-plane to a quarter of that; the boundary elements approach "
+        "on the same depth. Under displacement and spring control the "
+        "block stays as given (it sets the reference of delta) and a "
+        "warning says when it is too small; a layer is widened under "
+        "every control. Set 0 to keep Domain width and height as given, "
+        "for example for a periodic profile whose wavelength is the "
+        "width, or with Mesh/Uniform surface (which keeps them anyway).");
+      prm.leave_subsection();
+    }
+
+    void
+    Geometry::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      substrate =
+        parse_choice<Substrate>(prm.get("Substrate"), "Geometry/Substrate");
+      layer_thickness = prm.get_double("Layer thickness");
+      domain_width    = prm.get_double("Domain width");
+      domain_height   = prm.get_double("Domain height");
+      wake_lengths    = prm.get_double("Wake lengths");
+      prm.leave_subsection();
+      require(layer_thickness > 0 && std::isfinite(layer_thickness),
+              entry("Geometry", "Layer thickness", layer_thickness) +
+                " must be positive");
+      require(domain_width > 0 && std::isfinite(domain_width),
+              entry("Geometry", "Domain width", domain_width) +
+                " must be positive");
+      require(domain_height > 0 && std::isfinite(domain_height),
+              entry("Geometry", "Domain height", domain_height) +
+                " must be positive");
+    }
+
+
+    void
+    Mesh::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Finest surface cell",
+                        "0.5",
+                        Patterns::Double(),
+                        "Size (in eps) of the finest cells, placed at the "
+                        "contact edges. The Lennard-Jones process zone is "
+                        "about 0.05 sqrt(R eps) at muT = 6.08 and must be "
+                        "resolved by several such cells.");
+      prm.declare_entry("Mesh grading",
+                        "0.25",
+                        Patterns::Double(),
+                        "Away from the contact edges the desired cell size "
+                        "grows as grading x distance to the nearest edge.");
+      prm.declare_entry("Edge gap lower",
+                        "1.05",
+                        Patterns::Double(),
+                        "A top face belongs to a contact edge where its gap "
+                        "range overlaps [lower, upper] (in eps).");
+      prm.declare_entry("Edge gap upper",
+                        "2.5",
+                        Patterns::Double(),
+                        "See Edge gap lower.");
+      prm.declare_entry(
+        "Edge margin",
+        "8",
+        Patterns::Double(0),
+        "Distance (in eps) by which a contact edge may move before the "
+        "mesh is adapted again: the mesh is refined as if each edge were "
+        "this much wider, and changed only where a cell is coarser than "
+        "the edge itself needs. Wider "
+        "margins mean fewer adaptations, each re-solve, factorization "
+        "and transfer saved, for a few more cells.");
+      prm.declare_entry("Adaptation cycles per step",
+                        "3",
+                        Patterns::Integer(0),
+                        "How often a step may be re-solved on a mesh adapted "
+                        "to its own solution. 0 freezes the initial mesh.");
+      prm.declare_entry("Uniform surface",
+                        "false",
+                        Patterns::Bool(),
+                        "Refine the whole top surface to the finest cell "
+                        "(grading with depth only) instead of following the "
+                        "contact edges: the reference for checking the "
+                        "adaptive mesh, at a much higher cost.");
+      prm.leave_subsection();
+    }
+
+    void
+    Mesh::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      finest_cell           = prm.get_double("Finest surface cell");
+      grading               = prm.get_double("Mesh grading");
+      edge_gap_low          = prm.get_double("Edge gap lower");
+      edge_gap_high         = prm.get_double("Edge gap upper");
+      edge_margin           = prm.get_double("Edge margin");
+      max_adaptation_cycles = prm.get_integer("Adaptation cycles per step");
+      uniform_surface       = prm.get_bool("Uniform surface");
+      prm.leave_subsection();
+      require(finest_cell > 0,
+              entry("Mesh", "Finest surface cell", finest_cell) +
+                " must be positive");
+      require(grading > 0 && grading <= 2,
+              entry("Mesh", "Mesh grading", grading) + " must be in (0, 2]");
+      require(edge_gap_high > edge_gap_low,
+              entry("Mesh", "Edge gap upper", edge_gap_high) +
+                " must exceed Edge gap lower");
+    }
+  } // namespace Parameters
 } // namespace viscoslide

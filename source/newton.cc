@@ -170,4 +170,65 @@ namespace viscoslide
       }
     return -1;
   }
+
+
+  namespace Parameters
+  {
+    void
+    Solver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Linear solver",
+                        "automatic",
+                        Patterns::Selection(choice_pattern<LinearSolver>()),
+                        "'direct': MUMPS, one factorization per bulk operator, "
+                        "through which every Newton system is solved exactly "
+                        "(doc/model.md, Linear solver). "
+                        "'iterative': GMRES with algebraic multigrid (ML). "
+                        "'automatic': direct up to Direct solver limit "
+                        "unknowns, iterative above.");
+      prm.declare_entry("Direct solver limit",
+                        "500000",
+                        Patterns::Integer(1),
+                        "See Linear solver.");
+      prm.declare_entry("Newton tolerance",
+                        "1e-9",
+                        Patterns::Double(),
+                        "Newton converges when the residual norm falls "
+                        "below this times the total absolute surface "
+                        "traction (plus one finest cell loaded with "
+                        "sigma_max).");
+      prm.declare_entry("Maximum Newton iterations",
+                        "25",
+                        Patterns::Integer(1),
+                        "Newton iterations before the step is cut.");
+      prm.declare_entry("Line search",
+                        "true",
+                        Patterns::Bool(),
+                        "Backtracking line search on the residual norm.");
+      prm.declare_entry("Maximum relaxation steps",
+                        "400",
+                        Patterns::Integer(1),
+                        "Pseudo-time steps allowed to land on a new branch "
+                        "after a surface instability.");
+      prm.leave_subsection();
+    }
+
+    void
+    Solver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      linear_solver       = parse_choice<LinearSolver>(prm.get("Linear solver"),
+                                                 "Solver/Linear solver");
+      direct_solver_limit = prm.get_integer("Direct solver limit");
+      newton_tolerance    = prm.get_double("Newton tolerance");
+      max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+      line_search           = prm.get_bool("Line search");
+      max_relaxation_steps  = prm.get_integer("Maximum relaxation steps");
+      prm.leave_subsection();
+      require(newton_tolerance > 0 && newton_tolerance < 1,
+              entry("Solver", "Newton tolerance", newton_tolerance) +
+                " must be in (0, 1)");
+    }
+  } // namespace Parameters
 } // namespace viscoslide

@@ -247,6 +247,7 @@ namespace viscoslide
                        const bool         append)
     : file(filename, append ? std::ios::app : std::ios::trunc)
     , screen(std::cout.rdbuf())
+    , error_screen(std::cerr.rdbuf())
   {
     // Without its log the run goes on, on the screen as before.
     if (!file)
@@ -254,6 +255,8 @@ namespace viscoslide
     std::cout.flush();
     tee = std::make_unique<Tee>(to_screen ? screen : nullptr, file.rdbuf());
     std::cout.rdbuf(tee.get());
+    error_tee = std::make_unique<Tee>(error_screen, file.rdbuf());
+    std::cerr.rdbuf(error_tee.get());
   }
 
 
@@ -261,6 +264,7 @@ namespace viscoslide
   {
     std::cout.flush();
     std::cout.rdbuf(screen);
+    std::cerr.rdbuf(error_screen);
   }
 
 
@@ -406,22 +410,19 @@ namespace viscoslide
     done_before += std::clamp(fraction_done, 0., 1.);
   }
 
-  namespace
+  std::string
+  format_duration(const double seconds)
   {
-    std::string
-    duration(const double seconds)
-    {
-      std::ostringstream s;
-      s << std::fixed << std::setprecision(seconds < 600 ? 1 : 0);
-      if (seconds < 120)
-        s << seconds << " s";
-      else if (seconds < 7200)
-        s << seconds / 60 << " min";
-      else
-        s << seconds / 3600 << " h";
-      return s.str();
-    }
-  } // namespace
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(seconds < 600 ? 1 : 0);
+    if (seconds < 120)
+      s << seconds << " s";
+    else if (seconds < 7200)
+      s << seconds / 60 << " min";
+    else
+      s << seconds / 3600 << " h";
+    return s.str();
+  }
 
   std::string
   Progress::report(const double case_fraction) const
@@ -435,11 +436,11 @@ namespace viscoslide
     if (n_cases > 1)
       s << "case " << k << "/" << n_cases << " " << name << ": ";
     s << std::fixed << std::setprecision(0) << 100 * case_fraction << " %, "
-      << duration(elapsed) << " elapsed";
+      << format_duration(elapsed) << " elapsed";
     if (done - done_before > 0.02)
       s << ", ~"
-        << duration(elapsed / (done - done_before) *
-                    std::max(0., n_to_run - done))
+        << format_duration(elapsed / (done - done_before) *
+                           std::max(0., n_to_run - done))
         << " left";
     return s.str();
   }
@@ -472,4 +473,86 @@ namespace viscoslide
            VISCOSLIDE_GIT_REVISION + ", deal.II " + DEAL_II_PACKAGE_VERSION +
            ")";
   }
+
+
+  namespace Parameters
+  {
+    void
+    Output::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory that receives every file of the run: "
+                        "approach.csv, surface profiles, VTU/PVTU fields with "
+                        "their .pvd collection, and the parameter set "
+                        "actually used (parameters.prm, parameters.json). "
+                        "An existing directory that already holds results "
+                        "is refused unless the program is called with "
+                        "--overwrite.");
+      prm.declare_entry("Verbosity",
+                        "normal",
+                        Patterns::Selection(choice_pattern<Verbosity>()),
+                        "'quiet': only the start and end of each case and "
+                        "errors. 'normal': one line per step (approach) or "
+                        "per speed (steady-state solver) with the progress "
+                        "of the run: case k of n, sliding distance covered, "
+                        "elapsed and estimated remaining time. 'verbose': "
+                        "also every Newton residual and line-search step.");
+      prm.declare_entry("Write fields",
+                        "true",
+                        Patterns::Bool(),
+                        "Write VTU/PVTU volume and surface fields.");
+      prm.declare_entry(
+        "Field format",
+        "vtu",
+        Patterns::Selection(choice_pattern<FieldFormat>()),
+        "'vtu': per step one .vtu per process and a .pvtu, listed in NAME.pvd "
+        "(ParaView, VisIt). 'hdf5': per step one NAME_NNNNN.h5 written "
+        "by all processes together (MPI-IO), listed in NAME.xdmf (ParaView, "
+        "VisIt); fewer files for large runs on many processes.");
+      prm.declare_entry("Fields every",
+                        "10",
+                        Patterns::Integer(0),
+                        "Write fields every this many accepted steps (and "
+                        "always after the last step). 0: only the last.");
+      prm.declare_entry("Surface profile every",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write the surface profile CSV every this many "
+                        "accepted steps (and always after the last step). "
+                        "0: only the last.");
+      prm.declare_entry(
+        "Checkpoint every",
+        "100",
+        Patterns::Integer(0),
+        "Transient sliding: write a checkpoint (mesh, solution, history, "
+        "sliding position and steady-state window) into OUTPUT/checkpoint "
+        "every this many sliding steps, so that `viscoslide --resume` "
+        "continues a killed run from there (doc/restart.md). The "
+        "steady-state solver writes one after every converged speed or load "
+        "whatever the value above 0. The previous checkpoint is replaced "
+        "only once the new one is complete. 0: none.");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory = prm.get("Output directory");
+      verbosity =
+        parse_choice<Verbosity>(prm.get("Verbosity"), "Output/Verbosity");
+      write_fields     = prm.get_bool("Write fields");
+      fields_every     = prm.get_integer("Fields every");
+      field_format     = parse_choice<FieldFormat>(prm.get("Field format"),
+                                               "Output/Field format");
+      profile_every    = prm.get_integer("Surface profile every");
+      checkpoint_every = prm.get_integer("Checkpoint every");
+      prm.leave_subsection();
+      require(!directory.empty(),
+              "'Output/Output directory' must not be empty");
+    }
+  } // namespace Parameters
 } // namespace viscoslide

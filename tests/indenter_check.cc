@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <sstream>
 
 using namespace viscoslide;
 
@@ -18,18 +20,32 @@ namespace
 {
   const double R = 1e4, W = 8000.;
 
+  // The 'Indenter' section of a parameter file with `name` and these
+  // entries (the shapes' own entries at the values below unless changed),
+  // parsed as the program parses it.
   Parameters::IndenterProfile
-  shape(const std::string &name)
+  shape(const std::string                        &name,
+        const std::map<std::string, std::string> &changes = {})
   {
+    std::map<std::string, std::string> entries = {{"Shape", name},
+                                                  {"Punch half-width", "100"},
+                                                  {"Corner radius", "1000"},
+                                                  {"Exponent", "2"},
+                                                  {"Amplitude", "10"},
+                                                  {"Wavelength", "2000"},
+                                                  {"Expression", "x^2/(2*R)"},
+                                                  {"Profile file",
+                                                   "parabola.csv"}};
+    for (const auto &[entry, value] : changes)
+      entries[entry] = value;
+    ParameterHandler prm;
+    Parameters::IndenterProfile::declare(prm);
+    prm.enter_subsection("Indenter");
+    for (const auto &[entry, value] : entries)
+      prm.set(entry, value);
+    prm.leave_subsection();
     Parameters::IndenterProfile p;
-    p.shape         = name;
-    p.half_width    = 100;
-    p.corner_radius = 1000;
-    p.exponent      = 2;
-    p.amplitude     = 10;
-    p.wavelength    = 2000;
-    p.expression    = "x^2/(2*R)";
-    p.profile_file  = "parabola.csv";
+    p.parse(prm);
     return p;
   }
 
@@ -68,12 +84,14 @@ namespace
                   [&](const double x) { return a.profile(x) - b.profile(x); }));
   }
 
+  // Whether building the shape with these entries is refused.
   bool
-  refused(Parameters::IndenterProfile p)
+  refused(const std::string                        &name,
+          const std::map<std::string, std::string> &changes)
   {
     try
       {
-        create_indenter(p, R, W);
+        create_indenter(shape(name, changes), R, W);
       }
     catch (Parameters::ExcInvalidInput &e)
       {
@@ -96,7 +114,7 @@ main()
     for (int i = -2500; i <= 2500; ++i)
       table << 2. * i << "," << 4. * i * i / (2 * R) << "\n";
   }
-  const ParabolicIndenter parabola(R);
+  const auto parabola = create_indenter(shape("parabola"), R, W);
   for (const char *name : {"parabola",
                            "circle",
                            "flat punch",
@@ -105,44 +123,49 @@ main()
                            "expression",
                            "table"})
     slope_check(name, *create_indenter(shape(name), R, W));
-  auto quartic     = shape("power law");
-  quartic.exponent = 4;
-  slope_check("quartic", *create_indenter(quartic, R, W));
+  slope_check("quartic",
+              *create_indenter(shape("power law", {{"Exponent", "4"}}), R, W));
 
   for (const char *name : {"power law", "expression", "table", "circle"})
     equal_check(name,
                 "parabola",
                 *create_indenter(shape(name), R, W),
-                parabola);
+                *parabola);
   // the punch without flat part is the parabola of its corner radius;
   // the sinusoid of apex radius R matches the parabola near its apex
-  auto punch       = shape("flat punch");
-  punch.half_width = 0;
   equal_check("flat punch b=0",
               "parabola(r)",
-              *create_indenter(punch, R, W),
-              ParabolicIndenter(punch.corner_radius));
+              *create_indenter(shape("flat punch", {{"Punch half-width", "0"}}),
+                               R,
+                               W),
+              *create_indenter(shape("parabola"), 1000, W));
   // (A = 1000 eps, so that k x <= 0.32 and the x^6 term stays below 0.4 %
   // of the x^4 one)
-  auto wave       = shape("sinusoid");
-  wave.amplitude  = 1000;
-  wave.wavelength = 2 * M_PI * std::sqrt(R * wave.amplitude);
-  equal_check("sinusoid", "parabola", *create_indenter(wave, R, W), parabola);
+  const double       amplitude = 1000;
+  std::ostringstream wavelength;
+  wavelength.precision(17);
+  wavelength << 2 * M_PI * std::sqrt(R * amplitude);
+  equal_check("sinusoid",
+              "parabola",
+              *create_indenter(shape("sinusoid",
+                                     {{"Amplitude", "1000"},
+                                      {"Wavelength", wavelength.str()}}),
+                               R,
+                               W),
+              *parabola);
 
-  auto bad       = shape("expression");
-  bad.expression = "x^";
-  std::printf("refused syntax %d\n", refused(bad));
-  bad.expression = "sqrt(x)";
-  std::printf("refused nan %d\n", refused(bad));
-  bad              = shape("table");
-  bad.profile_file = "no_such_file.csv";
-  std::printf("refused missing %d\n", refused(bad));
+  std::printf("refused syntax %d\n",
+              refused("expression", {{"Expression", "x^"}}));
+  std::printf("refused nan %d\n",
+              refused("expression", {{"Expression", "sqrt(x)"}}));
+  std::printf("refused missing %d\n",
+              refused("table", {{"Profile file", "no_such_file.csv"}}));
   {
     std::ofstream("decreasing.csv") << "x_over_eps,h_over_eps\n1,0\n0,1\n";
     std::ofstream("header.csv") << "x,h\n0,0\n1,1\n";
   }
-  bad.profile_file = "decreasing.csv";
-  std::printf("refused decreasing %d\n", refused(bad));
-  bad.profile_file = "header.csv";
-  std::printf("refused header %d\n", refused(bad));
+  std::printf("refused decreasing %d\n",
+              refused("table", {{"Profile file", "decreasing.csv"}}));
+  std::printf("refused header %d\n",
+              refused("table", {{"Profile file", "header.csv"}}));
 }

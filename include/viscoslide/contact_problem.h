@@ -28,6 +28,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <viscoslide/case.h>
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
 #include <viscoslide/linear_solver.h>
@@ -72,12 +73,10 @@ namespace viscoslide
   public:
     static constexpr unsigned int dim = 2;
 
-    // `progress`, if given, is appended to the per-step report lines (the
-    // sweep driver's case k of n and time estimate); a resumed run tells it
-    // how much of the case its checkpoint holds. [core.cc]
-    ContactProblem(const Parameters::AllParameters &parameters,
-                   MPI_Comm                         mpi_communicator,
-                   Progress                        *progress = nullptr);
+    // The case's shared parts; its progress, if any, is appended to the
+    // per-step report lines, and a resumed run tells it how much of the
+    // case its checkpoint holds. [core.cc]
+    explicit ContactProblem(CaseParts &parts);
 
     // Approach, optional hold, sliding, optional retraction; writes all
     // outputs. With `resume`, continues the transient sliding phase from
@@ -136,6 +135,15 @@ namespace viscoslide
     // Residual -R(u) and, if asked, the consistent tangent dR/du.
     void
     assemble(bool with_matrix);
+    // A cell's part of -R: minus the divergence of the stress of the
+    // strains and the history advanced over the step. [assembly.cc]
+    void
+    add_stress_terms(const FEValues<dim>                        &fe_values,
+                     const std::vector<SymmetricTensor<2, dim>> &strain,
+                     const std::vector<SymmetricTensor<2, dim>> &old_strain,
+                     const std::vector<double>                  &history_values,
+                     const std::vector<ViscoelasticSolid::StepFactors> &factors,
+                     Vector<double> &cell_rhs) const;
     // The bulk part of the tangent, the same for every Newton iteration of
     // a time step: made once per time step and mesh.
     void
@@ -250,6 +258,10 @@ namespace viscoslide
     record_step(Phase phase);
     void
     write_fields();
+    // The stress components xx, yy, xy, zz and the dissipation rate at the
+    // quadrature points, as fields of the history's discontinuous space.
+    std::vector<TrilinosWrappers::MPI::Vector>
+    quadrature_fields();
     void
     write_profile(const std::string &filename);
 
@@ -258,12 +270,12 @@ namespace viscoslide
     ConditionalOStream               pcout;
     TimerOutput                      timer;
 
-    const Scales                          scales;
-    const ViscoelasticSolid               material;
-    const std::unique_ptr<InteractionLaw> law;
-    const std::unique_ptr<Indenter>       indenter;
-    const SurfacePostprocessor            postprocessor;
-    SurfaceCoupling                       coupling;
+    const Scales              &scales;
+    const ViscoelasticSolid   &material;
+    const InteractionLaw      &law;
+    const Indenter            &indenter;
+    const SurfacePostprocessor postprocessor;
+    SurfaceCoupling            coupling;
 
     parallel::distributed::Triangulation<dim> triangulation;
     const FESystem<dim>                       fe;
@@ -305,10 +317,10 @@ namespace viscoslide
     ReusedFactorization                                linear_solver;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
 
-    OutputWriter              writer;
+    OutputWriter             &writer;
     std::unique_ptr<CsvTable> approach_table;
     std::unique_ptr<CsvTable> history_table;
-    SteadyStateTable          steady_state_table;
+    SteadyStateTable         &steady_state_table;
     SurfaceQuantities         last_quantities{};
     double                    last_dissipation_rate = 0.;
 

@@ -234,6 +234,9 @@ namespace viscoslide
     position(long long int i) const;
     std::vector<double>
     surface_block(const TrilinosWrappers::SparseMatrix &matrix, bool record);
+    // The dense window system of solve_condensed(), on the first process.
+    LAPACKFullMatrix<double>
+    window_matrix(const SurfaceTerms &terms, bool bordered, double d) const;
     SurfaceTerms
     gather_surface_terms(const TrilinosWrappers::SparseMatrix &matrix,
                          const TrilinosWrappers::MPI::Vector  *b);

@@ -10,6 +10,8 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <viscoslide/input.h>
+
 #include <vector>
 
 namespace viscoslide
@@ -149,6 +151,34 @@ namespace viscoslide
     SymmetricTensor<4, 2> C0;
     std::vector<Arm>      arms;
   };
+
+
+  namespace Parameters
+  {
+    enum class TimeConstant
+    {
+      relaxation,
+      retardation
+    };
+    VISCOSLIDE_CHOICES(TimeConstant, "relaxation", "retardation")
+
+    // The 'Material' section: the standard linear solid or its Prony
+    // series (make_solid() of scales.h builds the solid in internal units).
+    struct Material
+    {
+      double       E0_over_Einf;
+      double       poisson_ratio;
+      TimeConstant time_constant;
+      // Arms of the generalised Maxwell solid; empty: one arm, the
+      // standard linear solid.
+      std::vector<PronyTerm> prony_series;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+  } // namespace Parameters
 } // namespace viscoslide
 
 #endif

@@ -5,7 +5,7 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <viscoslide/parameters.h>
+#include <viscoslide/input.h>
 
 #include <functional>
 #include <utility>
@@ -14,6 +14,58 @@
 namespace viscoslide
 {
   using namespace dealii;
+
+  namespace Parameters
+  {
+    struct AllParameters;
+
+    enum class Substrate
+    {
+      half_plane,
+      layer
+    };
+    VISCOSLIDE_CHOICES(Substrate, "half-plane", "layer")
+
+    // The 'Geometry' section: the block or the layer.
+    struct Geometry
+    {
+      Substrate substrate;
+      double    layer_thickness;
+      double    domain_width;
+      double    domain_height;
+      double    wake_lengths;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+
+      // The height of the block actually meshed.
+      double
+      height() const
+      {
+        return substrate == Substrate::layer ? layer_thickness : domain_height;
+      }
+    };
+
+    // The 'Mesh' section: the refinement at the contact edges.
+    struct Mesh
+    {
+      double       finest_cell;
+      double       grading;
+      double       edge_gap_low;
+      double       edge_gap_high;
+      double       edge_margin; // in eps
+      unsigned int max_adaptation_cycles;
+      bool         uniform_surface;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
 
   // Boundary ids of GridGenerator::subdivided_hyper_rectangle(colorize).
   constexpr types::boundary_id left_boundary   = 0;

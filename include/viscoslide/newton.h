@@ -8,12 +8,43 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <viscoslide/input.h>
+
 #include <functional>
 #include <memory>
 
 namespace viscoslide
 {
   using namespace dealii;
+
+  namespace Parameters
+  {
+    enum class LinearSolver
+    {
+      automatic,
+      direct,
+      iterative
+    };
+    VISCOSLIDE_CHOICES(LinearSolver, "automatic", "direct", "iterative")
+
+    // The 'Solver' section: Newton's method and its linear solves.
+    struct Solver
+    {
+      LinearSolver linear_solver;
+      unsigned int direct_solver_limit;
+      double       newton_tolerance;
+      unsigned int max_newton_iterations;
+      bool         line_search;
+      unsigned int max_relaxation_steps;
+      bool         verbose;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
 
   // What Newton's method needs of a problem. The iterate includes delta
   // under force control.

@@ -8,7 +8,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
-#include <viscoslide/parameters.h>
+#include <viscoslide/input.h>
 
 #include <chrono>
 #include <fstream>
@@ -20,6 +20,42 @@
 namespace viscoslide
 {
   using namespace dealii;
+
+  namespace Parameters
+  {
+    enum class Verbosity
+    {
+      quiet,
+      normal,
+      verbose
+    };
+    VISCOSLIDE_CHOICES(Verbosity, "quiet", "normal", "verbose")
+
+    enum class FieldFormat
+    {
+      vtu,
+      hdf5
+    };
+    VISCOSLIDE_CHOICES(FieldFormat, "vtu", "hdf5")
+
+    // The 'Output' section.
+    struct Output
+    {
+      std::string  directory;
+      Verbosity    verbosity;
+      unsigned int fields_every;
+      unsigned int profile_every;
+      unsigned int checkpoint_every; // sliding steps; 0: none
+      bool         write_fields;
+      FieldFormat  field_format;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
 
   // A CSV file with a header line, written by rank 0 only. Each row is
   // flushed as it is added so that a killed run keeps every finished step.
@@ -72,8 +108,9 @@ namespace viscoslide
 
   // While it lives, what the program prints on std::cout also goes into
   // `file` (a run's log.txt), or with `to_screen` = false only there (the
-  // cases of a study run side by side). `append`: a resumed run continues
-  // its log.
+  // cases of a study run side by side); what it prints on std::cerr goes
+  // into the file and, always, to the screen. `append`: a resumed run
+  // continues its log.
   class ScreenLog
   {
   public:
@@ -86,8 +123,8 @@ namespace viscoslide
   private:
     class Tee;
     std::ofstream        file;
-    std::unique_ptr<Tee> tee;
-    std::streambuf      *screen;
+    std::unique_ptr<Tee> tee, error_tee;
+    std::streambuf      *screen, *error_screen;
   };
 
 
@@ -173,6 +210,10 @@ namespace viscoslide
   // that a killed run leaves the old or the new file, never half of one.
   void
   write_atomically(const std::string &path, const std::string &text);
+
+  // A wall time as the progress lines show it: "42.0 s", "12.5 min", "3 h".
+  std::string
+  format_duration(double seconds);
 
   // The text that identifies the program version in every output.
   std::string

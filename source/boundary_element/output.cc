@@ -19,7 +19,7 @@ namespace viscoslide
         const double p = -traction[j];
         q.normal_force += p * dx;
         q.absolute_force += std::abs(p) * dx;
-        q.tangential_force += p * indenter->slope(x[j]) * dx;
+        q.tangential_force += p * indenter.slope(x[j]) * dx;
         if (gaps[j] < gc)
           {
             const double slope =

@@ -5,6 +5,7 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <viscoslide/boundary_element/solver.h>
+#include <viscoslide/boundary_element/window_preconditioner.h>
 
 #include <algorithm>
 #include <cmath>
@@ -33,132 +34,26 @@ namespace viscoslide
   } // namespace
 
 
-  // The Jacobian of Newton's system restricted to the points near the
-  // contact, where the traction law's tangent is large, factorized once
-  // and used for as long as GMRES converges quickly with it. Outside the
-  // window the tangent is nearly zero, so that the rest of the system is
-  // the identity plus the coupling through C, which one more application
-  // of C accounts for (block elimination).
-  class BoundaryElementSolver::WindowPreconditioner
-  {
-  public:
-    WindowPreconditioner(const SurfaceCompliance &compliance,
-                         const Vector<double>    &tangent,
-                         const double             dashpot,
-                         const unsigned int       first,
-                         const unsigned int       m,
-                         const bool               force,
-                         const double             force_scale)
-      : compliance(compliance)
-      , first(first)
-      , m(m)
-      , force(force)
-      , weight(m)
-      , load_weight(m)
-      , lu(m + 1, m + 1)
-    {
-      const Vector<double> column = compliance.impulse_response();
-      const unsigned int   n      = column.size();
-      for (unsigned int j = 0; j < m; ++j)
-        {
-          weight[j]      = tangent[first + j] + dashpot;
-          load_weight[j] = tangent[first + j];
-        }
-      for (unsigned int i = 0; i < m; ++i)
-        {
-          double border = 0;
-          for (unsigned int j = 0; j < m; ++j)
-            {
-              const double c = column[(i + n - j) % n];
-              lu(i, j)       = (i == j ? 1. : 0.) + c * weight[j];
-              border += c * load_weight[j];
-            }
-          lu(i, m) = force ? border : 0.;
-          lu(m, i) = force ? load_weight[i] / force_scale : 0.;
-        }
-      // Without a stiff point (no contact) the load row is empty: the
-      // identity there keeps the factorization regular.
-      const double corner =
-        std::accumulate(load_weight.begin(), load_weight.end(), 0.);
-      lu(m, m) = force && corner != 0. ? corner / force_scale : 1.;
-      lu.compute_lu_factorization();
-    }
-
-    void
-    vmult(Vector<double> &dst, const Vector<double> &src) const
-    {
-      const unsigned int n = src.size() - 1;
-      Vector<float>      window(m + 1);
-      for (unsigned int j = 0; j < m; ++j)
-        window[j] = src[first + j];
-      window[m] = src[n];
-      lu.solve(window);
-      Vector<double> w(n), Cw;
-      for (unsigned int j = 0; j < m; ++j)
-        w[first + j] = weight[j] * window[j] + load_weight[j] * window[m];
-      compliance.apply(w, Cw);
-      for (unsigned int j = 0; j < n; ++j)
-        dst[j] = src[j] - Cw[j];
-      for (unsigned int j = 0; j < m; ++j)
-        dst[first + j] = window[j];
-      dst[n] = window[m];
-    }
-
-    // Whether the window [begin, begin + size) lies within this one.
-    bool
-    covers(const unsigned int begin, const unsigned int size) const
-    {
-      return begin >= first && begin + size <= first + m;
-    }
-
-    unsigned int
-    size() const
-    {
-      return m;
-    }
-
-  private:
-    const SurfaceCompliance &compliance;
-    const unsigned int       first, m;
-    const bool               force;
-    Vector<double>           weight, load_weight;
-    // Single precision: as a preconditioner it need not be exact, and both
-    // the factorization and the solves (which read the whole factor from
-    // memory) take half the time.
-    LAPACKFullMatrix<float> lu;
-  };
-
-
-  BoundaryElementSolver::BoundaryElementSolver(
-    const Parameters::AllParameters &parameters,
-    MPI_Comm                         comm,
-    Progress                        *progress)
-    : prm(parameters)
-    , comm(comm)
+  BoundaryElementSolver::BoundaryElementSolver(CaseParts &parts)
+    : prm(parts.prm)
+    , comm(parts.comm)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(comm) == 0 &&
-              parameters.output.verbosity != Parameters::Verbosity::quiet)
+              prm.output.verbosity != Parameters::Verbosity::quiet)
     , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , scales(parameters)
-    , material(make_solid(parameters, scales))
-    , law(create_interaction_law(parameters.adhesion.law,
-                                 scales.dgamma,
-                                 scales.eps))
-    , indenter(create_indenter(parameters.indenter,
-                               scales.R,
-                               parameters.geometry.domain_width))
-    , writer(parameters.output.directory, comm, parameters.output.field_format)
-    , steady_state_table(parameters,
-                         scales,
-                         writer.path("steady_state.csv"),
-                         comm)
-    , progress(progress)
-    , dx((parameters.boundary_element.grid_spacing > 0
-            ? parameters.boundary_element.grid_spacing
-            : parameters.mesh.finest_cell / 2) *
+    , scales(parts.scales)
+    , material(parts.material)
+    , law(*parts.law)
+    , indenter(*parts.indenter)
+    , writer(parts.writer)
+    , steady_state_table(parts.steady_state_table)
+    , progress(parts.progress)
+    , dx((prm.boundary_element.grid_spacing > 0
+            ? prm.boundary_element.grid_spacing
+            : prm.mesh.finest_cell / 2) *
          scales.eps)
     , substrate(Parameters::Substrate::layer)
-    , thickness(parameters.geometry.height() * scales.eps)
+    , thickness(prm.geometry.height() * scales.eps)
   {
   }
 
@@ -180,7 +75,7 @@ namespace viscoslide
     for (unsigned int j = 0; j < n; ++j)
       {
         x[j] = (double(j) - n / 2) * dx;
-        h[j] = indenter->profile(x[j]);
+        h[j] = indenter.profile(x[j]);
         // The same x on the old grid; beyond it, its nearer end.
         if (n_old > 0)
           {
@@ -198,7 +93,7 @@ namespace viscoslide
   void
   BoundaryElementSolver::fit_period(const double V)
   {
-    const double wake = V * prm.longest_creep_time() * scales.eps;
+    const double wake = V * longest_creep_time(prm) * scales.eps;
     const double period =
       prm.boundary_element.period > 0
         ? prm.boundary_element.period * scales.eps
@@ -253,8 +148,8 @@ namespace viscoslide
     for (unsigned int j = 0; j < n; ++j)
       {
         gaps[j]     = scales.eps + h[j] - delta - u[j];
-        traction[j] = law->traction(gaps[j]);
-        tangent[j]  = law->derivative(gaps[j]);
+        traction[j] = law.traction(gaps[j]);
+        tangent[j]  = law.derivative(gaps[j]);
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
         Fn -= traction[j] * dx;
       }
@@ -625,6 +520,33 @@ namespace viscoslide
   }
 
 
+  // Under force control, the approach step that passed the Target load
+  // (`reached`) solved again with F_n held at exactly that load.
+  void
+  BoundaryElementSolver::hold_target_load(
+    const bool                                      reached,
+    const std::function<void(const std::string &)> &add_row)
+  {
+    const double F = prm.loading.target_load * scales.force;
+    if (!reached)
+      throw Parameters::ExcInvalidInput(
+        "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
+        " was not reached by 'Loading/Final approach' = " +
+        CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
+        CsvTable::format(last_quantities.normal_force / scales.force) +
+        "); raise the Final approach");
+    hold_force   = true;
+    target_force = F;
+    preconditioner.reset();
+    if (solve() < 0)
+      throw std::runtime_error("the boundary-element solver could not "
+                               "hold the Target load after the approach");
+    add_row("load");
+    pcout << "Load F_hat = " << prm.loading.target_load
+          << " reached at delta_hat = " << delta / scales.eps << std::endl;
+  }
+
+
   void
   BoundaryElementSolver::approach_phase()
   {
@@ -682,25 +604,7 @@ namespace viscoslide
       return done;
     });
     if (prm.loading.has_target_load())
-      {
-        if (!done)
-          throw Parameters::ExcInvalidInput(
-            "'Loading/Target load' = " +
-            CsvTable::format(prm.loading.target_load) +
-            " was not reached by 'Loading/Final approach' = " +
-            CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
-            CsvTable::format(last_quantities.normal_force / scales.force) +
-            "); raise the Final approach");
-        hold_force   = true;
-        target_force = F;
-        preconditioner.reset();
-        if (solve() < 0)
-          throw std::runtime_error("the boundary-element solver could not "
-                                   "hold the Target load after the approach");
-        add_row("load");
-        pcout << "Load F_hat = " << prm.loading.target_load
-              << " reached at delta_hat = " << delta / scales.eps << std::endl;
-      }
+      hold_target_load(done, add_row);
     if (prm.loading.retract)
       {
         hold_force = false;

@@ -121,24 +121,8 @@ namespace viscoslide
                                                                    old_strain);
           read_cell_history(cell, history_values, history_dofs);
 
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              ArmStress h;
-              for (unsigned int k = 0; k < material.n_arms(); ++k)
-                h += material.updated_arm_stress(k,
-                                                 arm_stress_at(history_values,
-                                                               k,
-                                                               q),
-                                                 strain[q] - old_strain[q],
-                                                 factors[k]);
-              const SymmetricTensor<2, dim> sigma =
-                material.stress(strain[q], h);
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_rhs(i) -=
-                  sigma * fe_values[displacement].symmetric_gradient(i, q) *
-                  JxW;
-            }
+          add_stress_terms(
+            fe_values, strain, old_strain, history_values, factors, cell_rhs);
 
           bool at_top = false;
           for (const unsigned int f : cell->face_indices())
@@ -170,6 +154,33 @@ namespace viscoslide
                              with_matrix,
                              system_matrix,
                              system_rhs);
+  }
+
+
+  void
+  ContactProblem::add_stress_terms(
+    const FEValues<dim>                               &fe_values,
+    const std::vector<SymmetricTensor<2, dim>>        &strain,
+    const std::vector<SymmetricTensor<2, dim>>        &old_strain,
+    const std::vector<double>                         &history_values,
+    const std::vector<ViscoelasticSolid::StepFactors> &factors,
+    Vector<double>                                    &cell_rhs) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      {
+        ArmStress h;
+        for (unsigned int k = 0; k < material.n_arms(); ++k)
+          h += material.updated_arm_stress(k,
+                                           arm_stress_at(history_values, k, q),
+                                           strain[q] - old_strain[q],
+                                           factors[k]);
+        const SymmetricTensor<2, dim> sigma = material.stress(strain[q], h);
+        const double                  JxW   = fe_values.JxW(q);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          cell_rhs(i) -=
+            sigma * fe_values[displacement].symmetric_gradient(i, q) * JxW;
+      }
   }
 
 

@@ -13,38 +13,27 @@
 
 namespace viscoslide
 {
-  ContactProblem::ContactProblem(const Parameters::AllParameters &parameters,
-                                 MPI_Comm  mpi_communicator,
-                                 Progress *progress)
-    : prm(parameters)
-    , mpi_communicator(mpi_communicator)
+  ContactProblem::ContactProblem(CaseParts &parts)
+    : prm(parts.prm)
+    , mpi_communicator(parts.comm)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
-              parameters.output.verbosity != Parameters::Verbosity::quiet)
+              prm.output.verbosity != Parameters::Verbosity::quiet)
     , timer(mpi_communicator,
             pcout,
             TimerOutput::never,
             TimerOutput::wall_times)
-    , scales(parameters)
-    , material(make_solid(parameters, scales))
-    , law(create_interaction_law(parameters.adhesion.law,
-                                 scales.dgamma,
-                                 scales.eps))
-    , indenter(create_indenter(parameters.indenter,
-                               scales.R,
-                               parameters.geometry.domain_width))
-    , postprocessor(*law,
-                    *indenter,
+    , scales(parts.scales)
+    , material(parts.material)
+    , law(*parts.law)
+    , indenter(*parts.indenter)
+    , postprocessor(law,
+                    indenter,
                     scales.eps,
-                    parameters.adhesion.contact_gap,
-                    parameters.adhesion.face_quadrature_points,
+                    prm.adhesion.contact_gap,
+                    prm.adhesion.face_quadrature_points,
                     top_boundary)
-    , coupling(parameters,
-               scales,
-               *law,
-               *indenter,
-               postprocessor,
-               mpi_communicator)
+    , coupling(prm, scales, law, indenter, postprocessor, mpi_communicator)
     , triangulation(mpi_communicator,
                     Triangulation<dim>::limit_level_difference_at_vertices)
     , fe(FE_Q<dim>(2), dim)
@@ -54,14 +43,9 @@ namespace viscoslide
     , history_dof_handler(triangulation)
     , history(n_arm_stress_components * material.n_arms() + 1)
     , linear_solver(timer, mpi_communicator)
-    , writer(parameters.output.directory,
-             mpi_communicator,
-             parameters.output.field_format)
-    , steady_state_table(parameters,
-                         scales,
-                         writer.path("steady_state.csv"),
-                         mpi_communicator)
-    , progress(progress)
+    , writer(parts.writer)
+    , steady_state_table(parts.steady_state_table)
+    , progress(parts.progress)
   {
     // The history field's nodes are the Gauss points of the cell
     // quadrature; find which node is which point once.

@@ -181,13 +181,10 @@ namespace viscoslide
   }
 
 
-  // Volume fields (displacement, stress from the quadrature points,
-  // dissipation rate and accumulated dissipated energy, MPI subdomain,
-  // refinement level) and surface fields (pressure, gap).
-  void
-  ContactProblem::write_fields()
+  namespace
   {
-    TimerOutput::Scope t(timer, "output");
+    // The fields at the quadrature points, in the order of
+    // ContactProblem::quadrature_fields().
     enum
     {
       s_xx,
@@ -197,7 +194,13 @@ namespace viscoslide
       D,
       n_fields
     };
-    std::array<TrilinosWrappers::MPI::Vector, n_fields> fields;
+  } // namespace
+
+
+  std::vector<TrilinosWrappers::MPI::Vector>
+  ContactProblem::quadrature_fields()
+  {
+    std::vector<TrilinosWrappers::MPI::Vector> fields(n_fields);
     for (auto &f : fields)
       f.reinit(history_dof_handler.locally_owned_dofs(), mpi_communicator);
 
@@ -235,6 +238,18 @@ namespace viscoslide
         }
     for (auto &f : fields)
       f.compress(VectorOperation::insert);
+    return fields;
+  }
+
+
+  // Volume fields (displacement, stress from the quadrature points,
+  // dissipation rate and accumulated dissipated energy, MPI subdomain,
+  // refinement level) and surface fields (pressure, gap).
+  void
+  ContactProblem::write_fields()
+  {
+    TimerOutput::Scope t(timer, "output");
+    const auto         fields = quadrature_fields();
 
     Vector<float> subdomain(triangulation.n_active_cells()),
       level(triangulation.n_active_cells());
@@ -276,8 +291,8 @@ namespace viscoslide
                          "surface",
                          dof_handler,
                          solution,
-                         *law,
-                         *indenter,
+                         law,
+                         indenter,
                          scales,
                          committed.delta,
                          committed.s,

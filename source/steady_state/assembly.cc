@@ -195,15 +195,12 @@ namespace viscoslide
   }
 
 
-  // The matrix of the linear terms at the present speed, on MeshWorker's
-  // mesh_loop: cells, the upwind fluxes of the interior faces, the outflow
-  // boundary.
-  void
-  SteadyStateSolver::assemble_bulk()
+  // The coefficients of the bulk at the present speed: each strain
+  // component's relaxation length and row scale, the stiffnesses, and
+  // which shape functions belong to which component.
+  SteadyStateSolver::AssemblyCoefficients
+  SteadyStateSolver::assembly_coefficients() const
   {
-    TimerOutput::Scope t(timer, "steady: assemble bulk");
-    bulk_matrix = 0;
-
     AssemblyCoefficients coefficients;
     coefficients.ell.resize(n_strain_components);
     coefficients.row_scale.resize(n_strain_components);
@@ -229,6 +226,21 @@ namespace viscoslide
         if (c >= first_component)
           coefficients.strain_dofs[c - first_component].push_back(i);
       }
+
+    return coefficients;
+  }
+
+
+  // The matrix of the linear terms at the present speed, on MeshWorker's
+  // mesh_loop: cells, the upwind fluxes of the interior faces, the outflow
+  // boundary.
+  void
+  SteadyStateSolver::assemble_bulk()
+  {
+    TimerOutput::Scope t(timer, "steady: assemble bulk");
+    bulk_matrix = 0;
+
+    const AssemblyCoefficients coefficients = assembly_coefficients();
 
     using Iterator = DoFHandler<dim>::active_cell_iterator;
     const auto cell_worker =
@@ -284,6 +296,35 @@ namespace viscoslide
   }
 
 
+  // eps(phi_i) and the projection Pi eps(phi_i) that the arm sees
+  // (viscous_strain.h) at each quadrature point of the cell scratch's
+  // FEValues was reinitialized on, for the displacement shape functions.
+  void
+  SteadyStateSolver::strain_gradients(const AssemblyCoefficients &coefficients,
+                                      AssemblyScratch            &scratch) const
+  {
+    const FEValues<dim>             &fe_values = scratch.fe_values;
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n_q        = quadrature.size();
+    auto                            &grad_phi_q = scratch.grad_phi_q;
+    auto                    &projected_grad_q   = scratch.projected_grad_q;
+    const FullMatrix<double> P =
+      ViscousStrain::projection(fe_values, strain_basis);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (coefficients.component[i] < first_component)
+        {
+          for (unsigned int q = 0; q < n_q; ++q)
+            grad_phi_q[q] = fe_values[displacement].symmetric_gradient(i, q);
+          ViscousStrain::project(P, grad_phi_q, projected_grad_q);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              scratch.grad_phi(q, i)       = grad_phi_q[q];
+              scratch.projected_grad(q, i) = projected_grad_q[q];
+            }
+        }
+  }
+
+
   // The bulk: elasticity of the relaxed spring and the arms, and the
   // reaction and advection terms of the viscous strain inside the cell.
   void
@@ -299,9 +340,7 @@ namespace viscoslide
     const FEValues<dim>             &fe_values = scratch.fe_values;
     const FEValuesExtractors::Vector displacement(0);
     const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
-    const unsigned int n_arms           = material.n_arms();
-    auto              &grad_phi_q       = scratch.grad_phi_q;
-    auto              &projected_grad_q = scratch.projected_grad_q;
+    const unsigned int n_arms = material.n_arms();
 
     copy.faces.clear();
     cell->get_dof_indices(copy.dofs);
@@ -314,22 +353,7 @@ namespace viscoslide
       }
     copy.cell_matrix = 0;
     scratch.fe_values.reinit(cell);
-
-    // The arm sees the projection Pi eps(u) (viscous_strain.h).
-    const FullMatrix<double> P =
-      ViscousStrain::projection(fe_values, strain_basis);
-    for (unsigned int i = 0; i < n; ++i)
-      if (component[i] < first_component)
-        {
-          for (unsigned int q = 0; q < n_q; ++q)
-            grad_phi_q[q] = fe_values[displacement].symmetric_gradient(i, q);
-          ViscousStrain::project(P, grad_phi_q, projected_grad_q);
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              scratch.grad_phi(q, i)       = grad_phi_q[q];
-              scratch.projected_grad(q, i) = projected_grad_q[q];
-            }
-        }
+    strain_gradients(coefficients, scratch);
 
     auto &C_arm_i = scratch.C_arm_i;
     for (unsigned int q = 0; q < n_q; ++q)

@@ -24,6 +24,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/case.h>
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
 #include <viscoslide/material.h>
@@ -44,9 +45,7 @@ namespace viscoslide
   class BoundaryElementSolver : public SteadySliding
   {
   public:
-    BoundaryElementSolver(const Parameters::AllParameters &prm,
-                          MPI_Comm                         comm,
-                          Progress                        *progress);
+    explicit BoundaryElementSolver(CaseParts &parts);
     ~BoundaryElementSolver();
 
     // The approach to Loading/Target load (or to the Final approach), then
@@ -141,6 +140,9 @@ namespace viscoslide
     void
     approach_phase();
     void
+    hold_target_load(bool                                            reached,
+                     const std::function<void(const std::string &)> &add_row);
+    void
     retract(const std::function<void(const std::string &)> &add_row);
     void
     move_indenter(
@@ -157,12 +159,12 @@ namespace viscoslide
     MPI_Comm                         comm;
     ConditionalOStream               pcout;
     TimerOutput                      timer;
-    const Scales                     scales;
-    const ViscoelasticSolid          material;
-    std::unique_ptr<InteractionLaw>  law;
-    std::unique_ptr<Indenter>        indenter;
-    OutputWriter                     writer;
-    SteadyStateTable                 steady_state_table;
+    const Scales                    &scales;
+    const ViscoelasticSolid         &material;
+    const InteractionLaw            &law;
+    const Indenter                  &indenter;
+    OutputWriter                    &writer;
+    SteadyStateTable                &steady_state_table;
     Progress                        *progress;
 
     // The grid: n points x_j = (j - n/2) dx, and the solid its compliance

@@ -177,8 +177,13 @@ namespace viscoslide
     void
     assemble_bulk();
     struct AssemblyCoefficients;
+    AssemblyCoefficients
+    assembly_coefficients() const;
     struct AssemblyScratch;
     struct AssemblyCopy;
+    void
+    strain_gradients(const AssemblyCoefficients &coefficients,
+                     AssemblyScratch            &scratch) const;
     void
     assemble_cell(const DoFHandler<dim>::active_cell_iterator &cell,
                   const AssemblyCoefficients                  &coefficients,

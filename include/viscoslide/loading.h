@@ -1,0 +1,88 @@
+// What the indenter is made to do, for every solver: the approach (to a
+// depth or a load), hold and retraction of the 'Loading' section, and the
+// sliding of the 'Sliding' section (its speeds, the control of the normal
+// direction, and the choice of solver).
+#ifndef viscoslide_loading_h
+#define viscoslide_loading_h
+
+#include <viscoslide/input.h>
+
+#include <cmath>
+#include <vector>
+
+namespace viscoslide
+{
+  namespace Parameters
+  {
+    enum class Control
+    {
+      displacement,
+      force,
+      spring
+    };
+    VISCOSLIDE_CHOICES(Control, "displacement", "force", "spring")
+
+    enum class SlidingSolver
+    {
+      transient,
+      steady_state,
+      boundary_element
+    };
+    VISCOSLIDE_CHOICES(SlidingSolver,
+                       "transient",
+                       "steady-state",
+                       "boundary-element")
+
+    struct Loading
+    {
+      double       initial_approach;
+      double       final_approach;
+      double       increment;
+      double       minimum_increment;
+      double       approach_speed;
+      double       hold_time;
+      unsigned int hold_steps;
+      bool         retract;
+      double       retract_to;
+      // F_hat to reach at the end of the approach; NaN: none, the approach
+      // ends at final_approach.
+      double target_load;
+
+      bool
+      has_target_load() const
+      {
+        return !std::isnan(target_load);
+      }
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Sliding
+    {
+      std::vector<double> speeds; // V_hat, in the order of continuation
+      double              speed;  // the last of them; 0: no sliding phase
+      Control             control;
+      double              spring_stiffness; // k_hat, Control = spring
+      double              increment;        // in finest cells
+      double              max_distance;
+      double              steady_tolerance;
+      double              steady_window;
+      SlidingSolver       solver;
+      double              continuation_factor;
+      int                 viscous_strain_degree;
+      // F_hat (force control) or delta_hat (displacement control) values
+      // followed at the last speed by the steady-state solver.
+      std::vector<double> load_path;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace viscoslide
+
+#endif

@@ -1,0 +1,261 @@
+#include <viscoslide/case_setup.h>
+#include <viscoslide/indenter.h>
+#include <viscoslide/parameters.h>
+#include <viscoslide/scales.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace viscoslide
+{
+  namespace CaseSetup
+  {
+    using namespace Parameters;
+
+    namespace
+    {
+      // The finest cell p4est can make from the coarse cells is 2^-30 of
+      // theirs; the refinement stays well below that.
+      constexpr double max_refinement_levels = 24;
+      // make_block() tiles the block with squares of its smaller side.
+      constexpr double max_aspect_ratio = 1e4;
+      // Beyond this distance (in eps) the interaction laws are negligible.
+      constexpr double interaction_range = 5;
+
+      // The half-width of the elastic (Hertz) line contact of a cylinder of
+      // radius R under F_hat, with plane-strain modulus E_star.
+      double
+      hertz_half_width(const double         F_hat,
+                       const double         E_star,
+                       const AllParameters &p)
+      {
+        const Scales s(p);
+        return std::sqrt(4. * std::max(F_hat, 0.) * s.force * s.R /
+                         (M_PI * E_star));
+      }
+    } // namespace
+
+
+    // Measured on Fig. 3 (muT 6.08, R_hat 1e4, F_hat 1) at V_hat 1000,
+    // against the boundary elements: a block of 2 x 0.4 wake lengths gives
+    // a friction 10 % low, 8 x 2 wake lengths 2 % low, 20 x 5 wake lengths
+    // (the default) 0.5 % low (doc/model.md, Block and wake).
+    void
+    fit_block_to_wake(AllParameters &p)
+    {
+      // A uniform surface would grow with the block.
+      if (p.sliding.solver == SlidingSolver::transient ||
+          p.geometry.wake_lengths == 0 || p.sliding.speeds.empty() ||
+          p.mesh.uniform_surface)
+        return;
+      const double V =
+        *std::max_element(p.sliding.speeds.begin(), p.sliding.speeds.end());
+      const double wake  = V * longest_creep_time(p);
+      const double width = p.geometry.wake_lengths * wake, depth = width / 4;
+      const bool   layer = p.geometry.substrate == Substrate::layer;
+      const bool   force = p.sliding.control == Control::force;
+      const bool   fem   = p.sliding.solver == SlidingSolver::steady_state;
+      const double W0 = p.geometry.domain_width, H0 = p.geometry.height();
+      // A thin layer keeps to the aspect ratio the mesh can tile.
+      if (fem && (force || layer))
+        p.geometry.domain_width =
+          std::max(W0, std::min(width, max_aspect_ratio * H0));
+      if (force && !layer)
+        p.geometry.domain_height = std::max(H0, depth);
+
+      std::ostringstream note;
+      if (p.geometry.domain_width != W0 || p.geometry.height() != H0)
+        note << "the wake, V tau_c = " << wake << " eps at V_hat " << V
+             << ", needs a larger block: " << W0 << " x " << H0
+             << " eps widened to " << p.geometry.domain_width << " x "
+             << p.geometry.height()
+             << " ('Geometry/Wake lengths' = " << p.geometry.wake_lengths << ")"
+             << (fem && p.geometry.domain_width < width
+                   ? "; not to the " + num(width) +
+                       " eps asked, the mesh tiles at most 1e4 layer "
+                       "thicknesses: the friction at the fastest speeds may be "
+                       "low"
+                   : "");
+      else if (fem && (W0 < width || (!layer && H0 < depth)))
+        note << "Warning: the wake, V tau_c = " << wake << " eps at V_hat " << V
+             << ", does not fit the block of " << W0 << " x " << H0
+             << " eps ('Geometry/Wake lengths' = " << p.geometry.wake_lengths
+             << " asks for " << width << " x " << depth
+             << "); with this control the block stays as given, and the "
+                "friction at the fastest speeds will be low";
+      else
+        return;
+      p.notes.push_back(note.str());
+    }
+
+
+
+    // Refuses, before a mesh is built, what the refinement cannot represent
+    // and a block the contact does not fit in.
+    void
+    check_mesh_can_hold_case(const AllParameters &p)
+    {
+      const double      W = p.geometry.domain_width, H = p.geometry.height();
+      const std::string block =
+        "the block of " + num(W) + " x " + num(H) + " eps";
+      require(std::max(W, H) / std::min(W, H) <= max_aspect_ratio,
+              block + " ('Geometry/Domain width', '" +
+                (p.geometry.substrate == Substrate::layer
+                   ? "Geometry/Layer thickness"
+                   : "Geometry/Domain height") +
+                "') has an aspect ratio above 1e4; the mesh tiles it with "
+                "squares of its smaller side");
+      const double levels = std::log2(std::min(W, H) / p.mesh.finest_cell);
+      require(levels <= max_refinement_levels,
+              entry("Mesh", "Finest surface cell", p.mesh.finest_cell) +
+                " is 2^" + num(std::ceil(levels)) +
+                " times smaller than the coarse cells of " + block +
+                "; at most 2^24 is allowed");
+      require(p.mesh.finest_cell >= 1e-3,
+              entry("Mesh", "Finest surface cell", p.mesh.finest_cell) +
+                " is below 1e-3 eps, far finer than the interaction law "
+                "needs (0.1 to 1 eps)");
+
+      if (p.mesh.uniform_surface) // a periodic profile covers the surface
+        return;
+      // The indenter, pressed to its final depth, must not reach the
+      // edges of the block within the range of the interaction.
+      const auto profile =
+        create_indenter(p.indenter, p.adhesion.R_over_eps, W);
+      double       lowest = std::numeric_limits<double>::max();
+      const double rim =
+        std::min(profile->profile(-W / 2), profile->profile(W / 2));
+      for (int i = 0; i <= 1000; ++i)
+        lowest = std::min(lowest, profile->profile(-W / 2 + W * i / 1000.));
+      const bool   force = p.loading.has_target_load();
+      const double stiffest =
+        std::max(1., 1. / p.material.E0_over_Einf); // plane-strain moduli
+      double depth = std::max(p.loading.final_approach, 0.);
+      if (force)
+        depth =
+          p.geometry.substrate == Substrate::half_plane
+            ? std::pow(hertz_half_width(p.loading.target_load, stiffest, p),
+                       2) /
+                (2 * p.adhesion.R_over_eps)
+            : 0.;
+      require(
+        rim - lowest >= depth + interaction_range,
+        block + " is too narrow for the contact: its edges lie " +
+          num(rim - lowest) +
+          " eps above the lowest point of the p.indenter, which " +
+          (force
+             ? "'Loading/Target load' = " + num(p.loading.target_load) +
+                 " presses about " + num(depth) + " eps deep (Hertz)"
+             : entry("Loading", "Final approach", p.loading.final_approach) +
+                 " presses in") +
+          "; widen 'Geometry/Domain width'");
+    }
+
+
+    // Legal but known to be inaccurate: said when the case starts.
+    void
+    warn_about_accuracy(AllParameters &p)
+    {
+      // The cohesive zone of a crack under the law's peak stress: about
+      // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.
+      const Scales s(p);
+      const double softest = std::min(1., 1. / p.material.E0_over_Einf);
+      const double zone =
+        M_PI / 8 * softest * s.dgamma / std::pow(s.sigma_max, 2);
+      if (p.adhesion.adhesive() && p.adhesion.tabor_parameter > 0 &&
+          p.mesh.finest_cell > zone / 2)
+        {
+          std::ostringstream note;
+          note << "Warning: 'Mesh/Finest surface cell' = " << p.mesh.finest_cell
+               << " eps is coarser than half the adhesive zone (about " << zone
+               << " eps); expect the contact edges and the friction "
+               << "to be off by several percent";
+          p.notes.push_back(note.str());
+        }
+      if (p.sliding.solver == SlidingSolver::transient && p.sliding.speed > 0)
+        p.notes.push_back(
+          "Note: 'Sliding/Solver' = transient slides the indenter until the "
+          "contact is steady, typically thousands of eps in steps of the "
+          "finest cell: minutes per speed at R_hat 400, 20 minutes to hours "
+          "at R_hat 1e4 (doc/benchmark.md). For the steady friction alone, "
+          "'Sliding/Solver' = steady-state solves it directly (about a "
+          "minute for a curve of 21 speeds at muT 1, 2-eps cells)");
+      if (!p.loading.has_target_load() || p.mesh.uniform_surface)
+        return;
+      const double width =
+        2 * hertz_half_width(p.loading.target_load, softest, p);
+      if (width > p.geometry.domain_width / 4)
+        {
+          std::ostringstream note;
+          note << "Warning: the contact at 'Loading/Target load' = "
+               << p.loading.target_load << " is about " << width
+               << " eps wide (Hertz, relaxed modulus), more than a quarter of "
+               << "'Geometry/Domain width' = " << p.geometry.domain_width
+               << "; the block's edges will shift the results";
+          p.notes.push_back(note.str());
+        }
+    }
+
+    void
+    check_consistency(const AllParameters &p)
+    {
+      // Builds the profile once, so that an unreadable table or a bad
+      // expression is reported with the other input errors, before a run.
+      create_indenter(p.indenter,
+                      p.adhesion.R_over_eps,
+                      p.geometry.domain_width);
+      require(p.mesh.finest_cell < p.geometry.height() / 4,
+              entry("Mesh", "Finest surface cell", p.mesh.finest_cell) +
+                " must be well below the substrate height " +
+                std::to_string(p.geometry.height()));
+      require(p.geometry.domain_width >= 2 * p.geometry.height() ||
+                p.geometry.substrate == Substrate::half_plane,
+              entry("Geometry", "Domain width", p.geometry.domain_width) +
+                " must be at least twice the Layer thickness");
+      require(!p.loading.has_target_load() || p.loading.approach_speed == 0,
+              "'Loading/Target load' needs a quasi-static approach "
+              "('Loading/Approach speed' = 0): the load is found on the "
+              "relaxed loading curve");
+      require(p.sliding.solver == SlidingSolver::transient ||
+                !p.loading.retract || p.sliding.speed == 0,
+              "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "
+              "the steady-state solver has no time to retract in");
+      require(p.sliding.speeds.size() == 1 ||
+                std::find(p.sweep.solvers.begin(),
+                          p.sweep.solvers.end(),
+                          SlidingSolver::transient) == p.sweep.solvers.end(),
+              "'Sweep/Solvers' with 'transient' needs a single 'Sliding/"
+              "Sliding speed' (the transient solver runs each listed speed "
+              "as a case of its own; the steady solvers follow the list)");
+      if (p.sliding.solver == SlidingSolver::boundary_element)
+        {
+          require(p.sliding.control != Control::spring,
+                  "'Sliding/Control' = spring is not available with "
+                  "'Sliding/Solver' = boundary-element: use force or "
+                  "displacement");
+          require(p.sliding.control == Control::force ||
+                    p.geometry.substrate == Substrate::layer ||
+                    p.sliding.speed == 0,
+                  "'Sliding/Solver' = boundary-element on a half-plane "
+                  "needs 'Sliding/Control' = force: the periodic "
+                  "half-plane has no depth to measure delta from");
+          require(p.loading.approach_speed == 0,
+                  "'Sliding/Solver' = boundary-element approaches "
+                  "quasi-statically: set 'Loading/Approach speed' = 0");
+          const double h = p.boundary_element.grid_spacing > 0
+                             ? p.boundary_element.grid_spacing
+                             : p.mesh.finest_cell / 2;
+          const double L = p.boundary_element.period > 0
+                             ? p.boundary_element.period
+                             : p.geometry.domain_width;
+          require(L / h >= 64 && L / h <= 1e8,
+                  entry("Boundary element", "Grid spacing", h) +
+                    " and the period " + std::to_string(L) + " eps give " +
+                    std::to_string(L / h) +
+                    " grid points; between 64 and 1e8 are allowed");
+        }
+    }
+  } // namespace CaseSetup
+} // namespace viscoslide

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <boost/serialization/string.hpp>
+
 namespace viscoslide
 {
   namespace Checkpoint
@@ -92,6 +94,50 @@ namespace viscoslide
             fs::remove(fs::path(directory) / name / "state.bin");
             fs::remove_all(fs::path(directory) / name);
           }
+    }
+
+
+    std::string
+    pack(const Format                                                 &format,
+         const std::function<void(boost::archive::binary_oarchive &)> &save)
+    {
+      std::ostringstream out;
+      {
+        boost::archive::binary_oarchive archive(out);
+        archive << format.solver << format.version;
+        save(archive);
+      }
+      return out.str();
+    }
+
+
+    void
+    unpack(const std::string                                            &state,
+           const std::string                                            &folder,
+           const Format                                                 &format,
+           const std::function<void(boost::archive::binary_iarchive &)> &load)
+    {
+      try
+        {
+          std::istringstream              in(state);
+          boost::archive::binary_iarchive archive(in);
+          std::string                     solver;
+          unsigned int                    version = 0;
+          archive >> solver >> version;
+          if (solver != format.solver || version != format.version)
+            throw Parameters::ExcInvalidInput(
+              "checkpoint '" + folder + "' holds the state of the " + solver +
+              " solver, version " + std::to_string(version) +
+              "; this run needs the " + format.solver + " solver's, version " +
+              std::to_string(format.version) +
+              " (written by another solver or another version of viscoslide)");
+          load(archive);
+        }
+      catch (const boost::archive::archive_exception &)
+        {
+          throw Parameters::ExcInvalidInput("checkpoint '" + folder +
+                                            "/state.bin' is damaged");
+        }
     }
   } // namespace Checkpoint
 } // namespace viscoslide

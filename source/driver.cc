@@ -8,6 +8,7 @@
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/run_record.h>
+#include <viscoslide/steady_state/run.h>
 #include <viscoslide/steady_state_table.h>
 
 #include <algorithm>
@@ -49,11 +50,14 @@ namespace viscoslide
         }
       try
         {
-          CaseParts parts(c.parameters, comm, &progress);
-          if (c.parameters.sliding.solver ==
-              Parameters::SlidingSolver::boundary_element)
+          CaseParts   parts(c.parameters, comm, &progress);
+          const auto &sliding = c.parameters.sliding;
+          if (sliding.solver == Parameters::SlidingSolver::boundary_element)
             BoundaryElementSolver(parts).run();
-          else
+          else if (sliding.solver == Parameters::SlidingSolver::steady_state &&
+                   sliding.speed > 0)
+            run_steady_state(parts, resume);
+          else // the transient solver, and an approach without sliding
             ContactProblem(parts).run(resume);
           return "";
         }

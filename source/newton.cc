@@ -172,6 +172,21 @@ namespace viscoslide
   }
 
 
+  int
+  relax_surface(const NewtonProblem      &problem,
+                const Scales             &scales,
+                const Parameters::Solver &solver,
+                ConditionalOStream       &out)
+  {
+    return relax(problem,
+                 16. * scales.dgamma / (scales.eps * scales.eps),
+                 0.5 * scales.eps,
+                 solver.max_relaxation_steps,
+                 solver.verbose,
+                 out);
+  }
+
+
   namespace Parameters
   {
     void

@@ -26,26 +26,6 @@ namespace viscoslide
   }
 
 
-  void
-  SurfaceCoupling::hold_approach()
-  {
-    force_controlled = false;
-    spring_stiffness = 0.;
-  }
-
-
-  void
-  SurfaceCoupling::hold_force(const double normal_force,
-                              const double spring,
-                              const double delta_of_spring)
-  {
-    force_controlled = true;
-    target_force     = normal_force;
-    spring_stiffness = spring;
-    spring_delta     = delta_of_spring;
-  }
-
-
   double
   SurfaceCoupling::spring_stiffness_of(const Parameters::AllParameters &prm,
                                        const Scales                    &scales)
@@ -74,7 +54,7 @@ namespace viscoslide
   void
   SurfaceCoupling::start_assembly()
   {
-    if (force_controlled)
+    if (control.force_controlled)
       delta_coupling = 0;
     force = delta_stiffness = abs_force = 0.;
   }
@@ -145,7 +125,7 @@ namespace viscoslide
     force += local.force;
     delta_stiffness += local.stiffness;
     abs_force += local.abs_force;
-    if (force_controlled)
+    if (control.force_controlled)
       constraints.distribute_local_to_global(local.coupling,
                                              dofs,
                                              delta_coupling);
@@ -162,14 +142,13 @@ namespace viscoslide
       matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
     traction_scale = Utilities::MPI::sum(abs_force, comm);
-    if (!force_controlled)
+    if (!control.force_controlled)
       return;
     delta_coupling.compress(VectorOperation::add);
     // Under spring control the force to hold follows delta.
-    force_mismatch = Utilities::MPI::sum(force, comm) - target_force -
-                     spring_stiffness * (spring_delta - delta);
+    force_mismatch = control.mismatch(Utilities::MPI::sum(force, comm), delta);
     delta_stiffness =
-      Utilities::MPI::sum(delta_stiffness, comm) + spring_stiffness;
+      Utilities::MPI::sum(delta_stiffness, comm) + control.spring_stiffness;
   }
 
 
@@ -378,8 +357,8 @@ namespace viscoslide
             return law_at(x, u_y, delta + t, s);
           });
         // G's spring term under spring control.
-        W.force += spring_stiffness * t;
-        W.stiffness += spring_stiffness;
+        W.force += control.spring_stiffness * t;
+        W.stiffness += control.spring_stiffness;
         return W;
       };
     return model;
@@ -390,7 +369,7 @@ namespace viscoslide
   SurfaceCoupling::residual_norm(const VectorType &rhs) const
   {
     const double r = rhs.l2_norm();
-    return force_controlled ? std::hypot(r, force_mismatch) : r;
+    return control.force_controlled ? std::hypot(r, force_mismatch) : r;
   }
 
 
@@ -403,7 +382,7 @@ namespace viscoslide
     x1.reinit(rhs);
     solve(rhs, x1);
     delta_update = 0.;
-    if (force_controlled)
+    if (control.force_controlled)
       {
         VectorType x2;
         x2.reinit(rhs);
@@ -423,7 +402,7 @@ namespace viscoslide
                                   VectorType                           &update)
   {
     delta_update = 0.;
-    if (force_controlled)
+    if (control.force_controlled)
       delta_update = solver.solve_bordered(
         matrix, delta_coupling, delta_stiffness, rhs, -force_mismatch, update);
     else
@@ -473,12 +452,7 @@ namespace viscoslide
     relaxation_anchor.reinit(system.solution);
     relaxing = true;
     const int steps =
-      viscoslide::relax(newton_problem(system),
-                        16. * scales.dgamma / (scales.eps * scales.eps),
-                        0.5 * scales.eps,
-                        prm.solver.max_relaxation_steps,
-                        prm.solver.verbose,
-                        out);
+      relax_surface(newton_problem(system), scales, prm.solver, out);
     surface_damping = 0.;
     relaxing        = false;
     return steps;

@@ -8,6 +8,10 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
+#include <functional>
 #include <string>
 
 namespace viscoslide
@@ -36,6 +40,30 @@ namespace viscoslide
     // contents of its state.bin; throws if there is none.
     std::string
     open(const std::string &directory, std::string &state, MPI_Comm comm);
+
+    // Who wrote a checkpoint's state: the solver and the version of what it
+    // serializes, raised whenever that changes. Written first and checked
+    // when read, so that a solver never misreads another's checkpoint or
+    // an older one of its own.
+    struct Format
+    {
+      std::string  solver;
+      unsigned int version;
+    };
+
+    // The contents of state.bin: the format, then what `save` writes.
+    std::string
+    pack(const Format                                                 &format,
+         const std::function<void(boost::archive::binary_oarchive &)> &save);
+
+    // Reads the contents of state.bin (of the checkpoint `folder`) through
+    // `load` once its format is checked; Parameters::ExcInvalidInput naming
+    // the folder if another solver or version wrote it, or it is damaged.
+    void
+    unpack(const std::string                                            &state,
+           const std::string                                            &folder,
+           const Format                                                 &format,
+           const std::function<void(boost::archive::binary_iarchive &)> &load);
 
     // Removes the checkpoint of a finished run, with any folder a kill
     // left behind.

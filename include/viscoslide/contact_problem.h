@@ -85,6 +85,32 @@ namespace viscoslide
     void
     run(bool resume = false);
 
+    // The approach and the hold alone, on a new block: where the
+    // steady-state solver starts from (steady_state/run.h). [core.cc]
+    void
+    approach();
+
+    // What the steady-state solver takes over after approach(): the block,
+    // the surface coupling and the relaxed state of the approach. Nothing
+    // of the transient solution is used afterwards. [sliding.cc]
+    struct HandOver
+    {
+      parallel::distributed::Triangulation<dim> &triangulation;
+      SurfaceCoupling                           &coupling;
+      const SurfacePostprocessor                &postprocessor;
+      TimerOutput                               &timer;
+      const DoFHandler<dim>                     &dof_handler;
+      const TrilinosWrappers::MPI::Vector       &solution;
+      double                                     delta, s, normal_force;
+    };
+    HandOver
+    hand_over();
+
+    // A finished run: its checkpoint removed, the timer's report printed.
+    // [core.cc]
+    void
+    finish();
+
     // Whether `directory` holds a complete checkpoint of a sliding run.
     // [checkpoint_restart.cc]
     static bool
@@ -218,8 +244,6 @@ namespace viscoslide
 
     void
     slide(bool resumed = false);
-    void
-    slide_steady(bool resumed);
     // Sets slide_plan from the state after the approach.
     void
     plan_slide();

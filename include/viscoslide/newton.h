@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <viscoslide/input.h>
+#include <viscoslide/scales.h>
 
 #include <functional>
 #include <memory>
@@ -120,6 +121,16 @@ namespace viscoslide
         unsigned int         max_steps,
         bool                 verbose,
         ConditionalOStream  &out);
+
+  // relax() of a surface held by the traction laws of these scales, as
+  // every solver uses it: the dashpot starts as stiff as the Lennard-Jones
+  // wall, 16 dgamma/eps^2, and a pseudo-step should move the surface by
+  // about eps/2; the steps and the verbosity of the Solver section.
+  int
+  relax_surface(const NewtonProblem      &problem,
+                const Scales             &scales,
+                const Parameters::Solver &solver,
+                ConditionalOStream       &out);
 } // namespace viscoslide
 
 #endif

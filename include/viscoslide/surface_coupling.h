@@ -36,6 +36,7 @@
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
 #include <viscoslide/linear_solver.h>
+#include <viscoslide/load_control.h>
 #include <viscoslide/newton.h>
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
@@ -64,33 +65,39 @@ namespace viscoslide
 
     // --- control of the indenter
 
-    // Displacement control: delta is given.
+    // Displacement control: delta is given (load_control.h).
     void
-    hold_approach();
+    hold_approach()
+    {
+      control.hold_approach();
+    }
     // Force control at F_n = normal_force; with a spring (stiffness in
     // force per unit length per length of approach) the target is
     // normal_force + spring_stiffness (spring_delta - delta).
     void
-    hold_force(double normal_force,
-               double spring_stiffness = 0.,
-               double spring_delta     = 0.);
+    hold_force(const double normal_force,
+               const double spring_stiffness = 0.,
+               const double spring_delta     = 0.)
+    {
+      control.hold_force(normal_force, spring_stiffness, spring_delta);
+    }
     bool
     force_control() const
     {
-      return force_controlled;
+      return control.force_controlled;
     }
     // The F_n held under force control, for continuation in the load.
     double &
     held_force()
     {
-      return target_force;
+      return control.target_force;
     }
     // The approach at which the spring of Sliding/Control = spring is
     // relaxed (kept by checkpoints).
     double
     spring_reference() const
     {
-      return spring_delta;
+      return control.spring_delta;
     }
     // The spring of Sliding/Control = spring; 0 for the other controls.
     static double
@@ -317,7 +324,7 @@ namespace viscoslide
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &force_controlled &target_force &spring_stiffness &spring_delta;
+      ar &control;
     }
 
   private:
@@ -345,10 +352,7 @@ namespace viscoslide
     MPI_Comm                         comm;
     const QGauss<1>                  quadrature;
 
-    bool   force_controlled = false;
-    double target_force     = 0.;
-    double spring_stiffness = 0.;
-    double spring_delta     = 0.;
+    LoadControl control;
 
     VectorType delta_coupling; // b
     double     force = 0., delta_stiffness = 0., abs_force = 0.;

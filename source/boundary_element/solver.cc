@@ -157,7 +157,9 @@ namespace viscoslide
     residual.reinit(n + 1);
     for (unsigned int j = 0; j < n; ++j)
       residual[j] = u[j] - Cw[j];
-    residual[n] = hold_force ? (Fn - target_force) / scales.sigma_max : 0.;
+    residual[n] = control.force_controlled
+                    ? control.mismatch(Fn, delta) / scales.sigma_max
+                    : 0.;
     if (with_matrix)
       {
         // The points where the traction law is stiff, and a window about
@@ -193,7 +195,7 @@ namespace viscoslide
                                                      dashpot,
                                                      begin,
                                                      m,
-                                                     hold_force,
+                                                     control.force_controlled,
                                                      scales.sigma_max / dx);
             work_since_factorization   = factorization_work(m);
             solves_since_factorization = 1;
@@ -243,22 +245,23 @@ namespace viscoslide
         for (unsigned int j = 0; j < n; ++j)
           {
             const double du = src[j];
-            const double dd = s.hold_force ? src[n] : 0.;
+            const double dd = s.control.force_controlled ? src[n] : 0.;
             w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
             load += s.tangent[j] * (du + dd) * s.dx;
           }
         s.compliance->apply(w, Cw);
         for (unsigned int j = 0; j < n; ++j)
           dst[j] = src[j] + Cw[j];
-        dst[n] = s.hold_force ? load / s.scales.sigma_max : src[n];
+        dst[n] =
+          s.control.force_controlled ? load / s.scales.sigma_max : src[n];
       }
     } jacobian{*this};
     Vector<double> rhs(residual);
     rhs *= -1.;
     update.reinit(n + 1);
-    SolverControl control(1000, 1e-8 * rhs.l2_norm(), false, false);
+    SolverControl solver_control(1000, 1e-8 * rhs.l2_norm(), false, false);
     SolverGMRES<Vector<double>> gmres(
-      control, SolverGMRES<Vector<double>>::AdditionalData(100));
+      solver_control, SolverGMRES<Vector<double>>::AdditionalData(100));
     try
       {
         gmres.solve(jacobian, update, rhs, *preconditioner);
@@ -271,7 +274,7 @@ namespace viscoslide
         last_gmres_converged = false;
       }
     last_gmres_work =
-      gmres_work(n, preconditioner->size(), control.last_step());
+      gmres_work(n, preconditioner->size(), solver_control.last_step());
     work_since_factorization += last_gmres_work;
     ++solves_since_factorization;
   }
@@ -295,7 +298,7 @@ namespace viscoslide
       const unsigned int n = u.size();
       for (unsigned int j = 0; j < n; ++j)
         u[j] = u0[j] + alpha * update[j];
-      delta = delta0 + (hold_force ? alpha * update[n] : 0.);
+      delta = delta0 + (control.force_controlled ? alpha * update[n] : 0.);
     };
     p.set_dashpot = [this](const double c) {
       dashpot = c;
@@ -316,13 +319,8 @@ namespace viscoslide
       u     = u_start;
       delta = delta_start;
       preconditioner.reset();
-      const int steps = relax(problem,
-                              16. * scales.dgamma / (scales.eps * scales.eps),
-                              0.5 * scales.eps,
-                              prm.solver.max_relaxation_steps,
-                              prm.solver.verbose,
-                              pcout);
-      dashpot         = 0;
+      const int steps = relax_surface(problem, scales, prm.solver, pcout);
+      dashpot = 0;
       return steps;
     };
     // Without contact the surface jumps in. Newton's method from the flat
@@ -384,7 +382,7 @@ namespace viscoslide
         const double ratio =
           u_before.size() == u.size() ? (next - at) / (at - at_before) : 0.;
         const bool secant = ratio != 0. && std::abs(ratio) <= 2;
-        if (secant && hold_force)
+        if (secant && control.force_controlled)
           delta += ratio * (delta_at - delta_before);
         for (unsigned int j = 0; j < u.size(); ++j)
           {
@@ -466,8 +464,8 @@ namespace viscoslide
     const double                 target,
     const std::function<void()> &on_converged)
   {
-    double      &parameter = hold_force ? target_force : delta;
-    const double distance  = std::abs(target - parameter);
+    double &parameter = control.force_controlled ? control.target_force : delta;
+    const double distance = std::abs(target - parameter);
     return follow(
       parameter,
       target,
@@ -535,8 +533,7 @@ namespace viscoslide
         CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
         CsvTable::format(last_quantities.normal_force / scales.force) +
         "); raise the Final approach");
-    hold_force   = true;
-    target_force = F;
+    control.hold_force(F);
     preconditioner.reset();
     if (solve() < 0)
       throw std::runtime_error("the boundary-element solver could not "
@@ -554,8 +551,8 @@ namespace viscoslide
     substrate = Parameters::Substrate::layer;
     thickness = prm.geometry.height() * scales.eps;
     fit_period(0.);
-    hold_force = false;
-    delta      = prm.loading.initial_approach * scales.eps;
+    control.hold_approach();
+    delta = prm.loading.initial_approach * scales.eps;
     if (solve() < 0)
       throw std::runtime_error(
         "the boundary-element solver found no equilibrium at the initial "
@@ -607,7 +604,7 @@ namespace viscoslide
       hold_target_load(done, add_row);
     if (prm.loading.retract)
       {
-        hold_force = false;
+        control.hold_approach();
         retract(add_row);
       }
   }
@@ -617,9 +614,10 @@ namespace viscoslide
   BoundaryElementSolver::run()
   {
     approach_phase();
-    hold_force = prm.sliding.control == Parameters::Control::force;
-    if (hold_force)
-      target_force = last_quantities.normal_force;
+    if (prm.sliding.control == Parameters::Control::force)
+      control.hold_force(last_quantities.normal_force);
+    else
+      control.hold_approach();
     if (prm.geometry.substrate == Parameters::Substrate::half_plane)
       {
         // From the block of the approach to the half-plane, at the load

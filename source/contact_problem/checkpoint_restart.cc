@@ -16,9 +16,8 @@ namespace viscoslide
 {
   namespace
   {
-    // Raised whenever the serialized scalars change, so that an old
-    // checkpoint is refused instead of misread.
-    constexpr unsigned int checkpoint_version = 2;
+    // The version raised whenever the serialized scalars change.
+    const Checkpoint::Format format{"transient", 3};
   } // namespace
 
 
@@ -46,12 +45,10 @@ namespace viscoslide
     history_transfer.prepare_for_serialization(in);
     triangulation.save(tmp + "/mesh");
 
-    std::ostringstream out;
-    {
-      boost::archive::binary_oarchive archive(out);
-      archive << checkpoint_version << *this;
-    }
-    Checkpoint::commit(writer.path(""), out.str(), mpi_communicator);
+    Checkpoint::commit(
+      writer.path(""),
+      Checkpoint::pack(format, [this](auto &archive) { archive << *this; }),
+      mpi_communicator);
     pcout << "Checkpoint after " << history_rows << " rows of history.csv"
           << std::endl;
   }
@@ -72,23 +69,9 @@ namespace viscoslide
     std::string       state;
     const std::string dir =
       Checkpoint::open(writer.path(""), state, mpi_communicator);
-    try
-      {
-        std::istringstream              in(state);
-        boost::archive::binary_iarchive archive(in);
-        unsigned int                    version = 0;
-        archive >> version;
-        if (version != checkpoint_version)
-          throw Parameters::ExcInvalidInput(
-            "checkpoint '" + dir +
-            "' was written by another version of viscoslide");
-        archive >> *this;
-      }
-    catch (const boost::archive::archive_exception &)
-      {
-        throw Parameters::ExcInvalidInput("checkpoint '" + dir +
-                                          "/state.bin' is damaged");
-      }
+    Checkpoint::unpack(state, dir, format, [this](auto &archive) {
+      archive >> *this;
+    });
     current = committed;
 
     make_block(triangulation, prm);

@@ -287,54 +287,56 @@ namespace viscoslide
 
 
   void
+  ContactProblem::approach()
+  {
+    open_approach_table(false);
+    make_block(triangulation, prm);
+    setup_system();
+    committed.delta = prm.loading.initial_approach;
+    current         = committed;
+    refine_initial_mesh();
+    pcout << "Initial mesh: " << triangulation.n_global_active_cells()
+          << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
+
+    LoadState first = committed;
+    if (!advance_to(first, Phase::start))
+      abort_run(first);
+    if (prm.loading.has_target_load())
+      approach_to_load();
+    else
+      ramp(Phase::approach, prm.loading.final_approach);
+    if (prm.loading.hold_time > 0)
+      hold();
+  }
+
+
+  void
   ContactProblem::run(const bool resume)
   {
-    const bool steady =
-      prm.sliding.speed > 0 &&
-      prm.sliding.solver == Parameters::SlidingSolver::steady_state;
-    // A resumed steady-state run reads its checkpoint in slide_steady().
-    if (resume && !steady)
+    // The approach and the hold; a resumed run has them behind it.
+    if (resume)
       {
         read_checkpoint();
         open_approach_table(true);
       }
-    else if (!resume)
-      {
-        open_approach_table(false);
-        make_block(triangulation, prm);
-        setup_system();
-        committed.delta = prm.loading.initial_approach;
-        current         = committed;
-        refine_initial_mesh();
-        pcout << "Initial mesh: " << triangulation.n_global_active_cells()
-              << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
-
-        // The approach and the hold; a resumed run has them behind it.
-        LoadState first = committed;
-        if (!advance_to(first, Phase::start))
-          abort_run(first);
-        if (prm.loading.has_target_load())
-          approach_to_load();
-        else
-          ramp(Phase::approach, prm.loading.final_approach);
-        if (prm.loading.hold_time > 0)
-          hold();
-      }
-
-    if (steady)
-      slide_steady(resume);
     else
-      {
-        if (prm.sliding.speed > 0)
-          slide(resume);
-        if (prm.loading.retract)
-          ramp(Phase::retract, prm.loading.retract_to);
-        write_profile("surface_profile_final.csv");
-        if (prm.output.write_fields &&
-            (prm.output.fields_every == 0 ||
-             (step_number - 1) % prm.output.fields_every != 0))
-          write_fields();
-      }
+      approach();
+    if (prm.sliding.speed > 0)
+      slide(resume);
+    if (prm.loading.retract)
+      ramp(Phase::retract, prm.loading.retract_to);
+    write_profile("surface_profile_final.csv");
+    if (prm.output.write_fields &&
+        (prm.output.fields_every == 0 ||
+         (step_number - 1) % prm.output.fields_every != 0))
+      write_fields();
+    finish();
+  }
+
+
+  void
+  ContactProblem::finish()
+  {
     // A finished run needs its checkpoint no more.
     Checkpoint::remove(writer.path(""), mpi_communicator);
     timer.print_wall_time_statistics(mpi_communicator);

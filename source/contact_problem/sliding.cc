@@ -1,7 +1,6 @@
 // ContactProblem: the sliding phase, by time stepping until steady state
-// (slide()) or handed to the steady-state solver (slide_steady()).
+// (slide()), or the state handed to the steady-state solver (hand_over()).
 #include <viscoslide/contact_problem.h>
-#include <viscoslide/steady_state/solver.h>
 
 #include <cstdio>
 
@@ -200,46 +199,17 @@ namespace viscoslide
   }
 
 
-  // The steady state solved directly in the indenter's frame, starting
-  // from the relaxed state of the approach (steady_state/solver.h), or
-  // with `resumed` from the checkpoint of its last converged station. The
-  // triangulation then belongs to the steady-state solver: nothing of the
-  // transient solution is used afterwards.
-  void
-  ContactProblem::slide_steady(const bool resumed)
+  ContactProblem::HandOver
+  ContactProblem::hand_over()
   {
-    SteadyStateSolver steady(
-      prm, scales, material, coupling, postprocessor, triangulation, timer);
-    StationCheckpoint start;
-    if (resumed)
-      start = steady.read_checkpoint(writer.path(""));
-    else
-      {
-        steady.initialize(dof_handler, solution, committed.delta, committed.s);
-        if (prm.sliding.control != Parameters::Control::displacement)
-          coupling.hold_force(last_quantities.normal_force,
-                              SurfaceCoupling::spring_stiffness_of(prm, scales),
-                              committed.delta);
-      }
-    pcout << "Steady sliding at V_hat = " << prm.sliding.speed << " under "
-          << Parameters::to_string(prm.sliding.control)
-          << " control, by continuation from the "
-          << (resumed ? "checkpoint" : "relaxed state") << std::endl;
-    std::function<void(const StationCheckpoint &)> checkpoint;
-    if (prm.output.checkpoint_every > 0)
-      checkpoint = [&](const StationCheckpoint &station) {
-        steady.write_checkpoint(writer.path(""), station);
-      };
-    run_stations(steady,
-                 Parameters::SlidingSolver::steady_state,
-                 prm,
-                 scales,
-                 writer,
-                 steady_state_table,
-                 progress,
-                 pcout,
-                 mpi_communicator,
-                 start,
-                 checkpoint);
+    return {triangulation,
+            coupling,
+            postprocessor,
+            timer,
+            dof_handler,
+            solution,
+            committed.delta,
+            committed.s,
+            last_quantities.normal_force};
   }
 } // namespace viscoslide

@@ -16,9 +16,8 @@ namespace viscoslide
 {
   namespace
   {
-    // Distinct from the transient's, so that neither solver reads the
-    // other's checkpoint; raised whenever the scalars change.
-    constexpr unsigned int steady_checkpoint_version = 102;
+    // The version raised whenever the scalars change.
+    const Checkpoint::Format format{"steady-state", 103};
   } // namespace
 
 
@@ -33,16 +32,18 @@ namespace viscoslide
     transfer.prepare_for_serialization(solution);
     triangulation.save(tmp + "/mesh");
 
-    std::ostringstream out;
-    {
-      boost::archive::binary_oarchive archive(out);
-      const double                    force = coupling.held_force(),
-                   spring                   = coupling.spring_reference();
-      archive << steady_checkpoint_version << station.next_station
-              << station.continuation_rows << station.table_rows << V_hat
-              << delta << s << force << spring << edge_spans;
-    }
-    Checkpoint::commit(directory, out.str(), mpi_communicator);
+    const double force  = coupling.held_force(),
+                 spring = coupling.spring_reference();
+    Checkpoint::commit(directory,
+                       Checkpoint::pack(format,
+                                        [&](auto &archive) {
+                                          archive << station.next_station
+                                                  << station.continuation_rows
+                                                  << station.table_rows << V_hat
+                                                  << delta << s << force
+                                                  << spring << edge_spans;
+                                        }),
+                       mpi_communicator);
   }
 
 
@@ -54,25 +55,11 @@ namespace viscoslide
       Checkpoint::open(directory, state, mpi_communicator);
     StationCheckpoint station;
     double            force = 0., spring = 0.;
-    try
-      {
-        std::istringstream              in(state);
-        boost::archive::binary_iarchive archive(in);
-        unsigned int                    version = 0;
-        archive >> version;
-        if (version != steady_checkpoint_version)
-          throw Parameters::ExcInvalidInput(
-            "checkpoint '" + dir +
-            "' was not written by this version's steady-state solver");
-        archive >> station.next_station >> station.continuation_rows >>
-          station.table_rows >> V_hat >> delta >> s >> force >> spring >>
-          edge_spans;
-      }
-    catch (const boost::archive::archive_exception &)
-      {
-        throw Parameters::ExcInvalidInput("checkpoint '" + dir +
-                                          "/state.bin' is damaged");
-      }
+    Checkpoint::unpack(state, dir, format, [&](auto &archive) {
+      archive >> station.next_station >> station.continuation_rows >>
+        station.table_rows >> V_hat >> delta >> s >> force >> spring >>
+        edge_spans;
+    });
     if (prm.sliding.control != Parameters::Control::displacement)
       coupling.hold_force(force,
                           SurfaceCoupling::spring_stiffness_of(prm, scales),

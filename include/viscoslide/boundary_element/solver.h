@@ -27,6 +27,7 @@
 #include <viscoslide/case.h>
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
+#include <viscoslide/load_control.h>
 #include <viscoslide/material.h>
 #include <viscoslide/newton.h>
 #include <viscoslide/output.h>
@@ -87,12 +88,12 @@ namespace viscoslide
     unsigned long
     n_unknowns() const override
     {
-      return u.size() + (hold_force ? 1 : 0);
+      return u.size() + (control.force_controlled ? 1 : 0);
     }
     bool
     force_control() const override
     {
-      return hold_force;
+      return control.force_controlled;
     }
     // [output.cc]
     void
@@ -179,10 +180,9 @@ namespace viscoslide
 
     // The state.
     Vector<double> u;
-    double         delta        = 0;
-    double         V_hat        = 0;
-    bool           hold_force   = false;
-    double         target_force = 0;
+    double         delta = 0;
+    double         V_hat = 0;
+    LoadControl    control;
 
     // Newton's work: gaps, tractions (q, attraction > 0), their tangent,
     // the residual u - C q with the load equation last, the update, the

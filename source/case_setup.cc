@@ -144,7 +144,7 @@ namespace viscoslide
         rim - lowest >= depth + interaction_range,
         block + " is too narrow for the contact: its edges lie " +
           num(rim - lowest) +
-          " eps above the lowest point of the p.indenter, which " +
+          " eps above the lowest point of the indenter, which " +
           (force
              ? "'Loading/Target load' = " + num(p.loading.target_load) +
                  " presses about " + num(depth) + " eps deep (Hertz)"

@@ -6,14 +6,23 @@
 
 namespace viscoslide
 {
-  struct SurfaceCompliance::Plans
+  template <int dim>
+  struct SurfaceCompliance<dim>::Plans
   {
-    explicit Plans(const unsigned int n)
-      : real(fftw_alloc_real(n))
-      , spectrum(fftw_alloc_complex(n / 2 + 1))
-      , forward(fftw_plan_dft_r2c_1d(n, real, spectrum, FFTW_ESTIMATE))
-      , backward(fftw_plan_dft_c2r_1d(n, spectrum, real, FFTW_ESTIMATE))
+    // FFTW's shape: slowest first, x (the last of n) fastest.
+    explicit Plans(const std::array<unsigned int, dim - 1> &n,
+                   const unsigned int                       n_points,
+                   const unsigned int                       n_modes)
+      : real(fftw_alloc_real(n_points))
+      , spectrum(fftw_alloc_complex(n_modes))
     {
+      std::array<int, dim - 1> shape;
+      for (unsigned int d = 0; d < dim - 1; ++d)
+        shape[d] = n[d];
+      forward =
+        fftw_plan_dft_r2c(dim - 1, shape.data(), real, spectrum, FFTW_ESTIMATE);
+      backward =
+        fftw_plan_dft_c2r(dim - 1, shape.data(), spectrum, real, FFTW_ESTIMATE);
     }
     ~Plans()
     {
@@ -28,30 +37,59 @@ namespace viscoslide
   };
 
 
-  SurfaceCompliance::SurfaceCompliance(const Parameters::Substrate substrate,
-                                       const double                thickness,
-                                       const ViscoelasticSolid    &material,
-                                       const double                nu,
-                                       const unsigned int          n,
-                                       const double                dx)
+  namespace
+  {
+    template <std::size_t d>
+    unsigned int
+    product(const std::array<unsigned int, d> &n)
+    {
+      unsigned int p = 1;
+      for (const unsigned int m : n)
+        p *= m;
+      return p;
+    }
+
+    // The number of complex modes FFTW's real-to-complex transform keeps:
+    // n_x/2 + 1 of the fastest (x) direction, all of the others.
+    template <std::size_t d>
+    unsigned int
+    mode_count(const std::array<unsigned int, d> &n)
+    {
+      return product(n) / n[d - 1] * (n[d - 1] / 2 + 1);
+    }
+  } // namespace
+
+
+  template <int dim>
+  SurfaceCompliance<dim>::SurfaceCompliance(
+    const Parameters::Substrate              substrate,
+    const double                             thickness,
+    const ViscoelasticSolid                 &material,
+    const double                             nu,
+    const std::array<unsigned int, dim - 1> &n,
+    const double                             dx)
     : substrate(substrate)
     , thickness(thickness)
     , material(material)
     , nu(nu)
     , n(n)
+    , n_points(product(n))
+    , n_modes(mode_count(n))
     , dx(dx)
-    , symbol(n / 2 + 1)
-    , plans(std::make_unique<Plans>(n))
+    , symbol(n_modes)
+    , plans(std::make_unique<Plans>(n, n_points, n_modes))
   {
     set_speed(0.);
   }
 
 
-  SurfaceCompliance::~SurfaceCompliance() = default;
+  template <int dim>
+  SurfaceCompliance<dim>::~SurfaceCompliance() = default;
 
 
+  template <int dim>
   double
-  SurfaceCompliance::layer_factor(const double s, const double nu)
+  SurfaceCompliance<dim>::layer_factor(const double s, const double nu)
   {
     // [(3 - 4 nu) sinh 2s - 2s] / [(3 - 4 nu) cosh 2s + 2 s^2 + 5 - 12 nu
     // + 8 nu^2], multiplied through by 2 exp(-2s) so that it neither
@@ -66,8 +104,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   std::complex<double>
-  SurfaceCompliance::modulus(const double omega) const
+  SurfaceCompliance<dim>::modulus(const double omega) const
   {
     const std::complex<double> i(0., 1.);
     std::complex<double>       E = 1.;
@@ -80,37 +119,57 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   double
-  SurfaceCompliance::elastic_compliance(const unsigned int m) const
+  SurfaceCompliance<dim>::elastic_compliance(const double k) const
   {
-    const double k = 2. * M_PI * m / (n * dx);
     if (substrate == Parameters::Substrate::half_plane)
-      return m == 0 ? 0. : 2. / k;
-    if (m == 0)
+      return k == 0 ? 0. : 2. / k;
+    if (k == 0)
       return thickness * (1. - 2. * nu) / ((1. - nu) * (1. - nu));
     return 2. / k * layer_factor(k * thickness, nu);
   }
 
 
+  template <int dim>
+  std::pair<double, double>
+  SurfaceCompliance<dim>::wave_vector(const unsigned int m) const
+  {
+    const unsigned int n_x = n[dim - 2], kept = n_x / 2 + 1;
+    const double       k_x = 2. * M_PI * (m % kept) / (n_x * dx);
+    if (dim == 2)
+      return {k_x, k_x};
+    // FFTW's order of the y modes: 0 .. n_y/2, then the negative ones.
+    const unsigned int n_y = n[0], i = m / kept;
+    const double       k_y =
+      2. * M_PI * (2 * i <= n_y ? double(i) : double(i) - n_y) / (n_y * dx);
+    return {k_x, std::sqrt(k_x * k_x + k_y * k_y)};
+  }
+
+
+  template <int dim>
   void
-  SurfaceCompliance::set_speed(const double speed)
+  SurfaceCompliance<dim>::set_speed(const double speed)
   {
     V = speed;
-    for (unsigned int m = 0; m <= n / 2; ++m)
+    for (unsigned int m = 0; m < n_modes; ++m)
       {
-        const double k = 2. * M_PI * m / (n * dx);
-        symbol[m]      = elastic_compliance(m) / modulus(-k * V) / double(n);
+        const auto [k_x, k] = wave_vector(m);
+        symbol[m] =
+          elastic_compliance(k) / modulus(-k_x * V) / double(n_points);
       }
   }
 
 
+  template <int dim>
   void
-  SurfaceCompliance::apply(const Vector<double> &q, Vector<double> &u) const
+  SurfaceCompliance<dim>::apply(const Vector<double> &q,
+                                Vector<double>       &u) const
   {
-    AssertDimension(q.size(), n);
+    AssertDimension(q.size(), n_points);
     std::copy(q.begin(), q.end(), plans->real);
     fftw_execute(plans->forward);
-    for (unsigned int m = 0; m <= n / 2; ++m)
+    for (unsigned int m = 0; m < n_modes; ++m)
       {
         const std::complex<double> z(plans->spectrum[m][0],
                                      plans->spectrum[m][1]);
@@ -119,37 +178,45 @@ namespace viscoslide
         plans->spectrum[m][1]        = w.imag();
       }
     fftw_execute(plans->backward);
-    u.reinit(n, true);
-    std::copy(plans->real, plans->real + n, u.begin());
+    u.reinit(n_points, true);
+    std::copy(plans->real, plans->real + n_points, u.begin());
   }
 
 
+  template <int dim>
   Vector<double>
-  SurfaceCompliance::impulse_response() const
+  SurfaceCompliance<dim>::impulse_response() const
   {
-    Vector<double> unit(n), response(n);
+    Vector<double> unit(n_points), response(n_points);
     unit[0] = 1.;
     apply(unit, response);
     return response;
   }
 
 
+  template <int dim>
   double
-  SurfaceCompliance::dissipation_rate(const Vector<double> &q) const
+  SurfaceCompliance<dim>::dissipation_rate(const Vector<double> &q) const
   {
     std::copy(q.begin(), q.end(), plans->real);
     fftw_execute(plans->forward);
-    // V L sum over k != 0 of k Im C(k) |q_k|^2, the modes +k and -k
-    // counted together; the Nyquist mode carries no loss (the inverse
-    // transform keeps only its real part).
-    double sum = 0;
-    for (unsigned int m = 1; 2 * m < n; ++m)
-      {
-        const double k  = 2. * M_PI * m / (n * dx);
-        const double q2 = std::norm(
-          std::complex<double>(plans->spectrum[m][0], plans->spectrum[m][1]));
-        sum += k * (symbol[m] * double(n)).imag() * q2;
-      }
-    return 2. * V * dx * sum / double(n);
+    // V A sum over k_x != 0 of k_x Im C(k) |q_k|^2 (A the period's length
+    // or area), the modes k and -k counted together; the Nyquist modes of
+    // x carry no loss (the inverse transform keeps only their real part).
+    const unsigned int n_x = n[dim - 2], kept = n_x / 2 + 1;
+    double             sum = 0;
+    for (unsigned int m = 0; m < n_modes; ++m)
+      if (m % kept != 0 && 2 * (m % kept) < n_x)
+        {
+          const double q2 = std::norm(
+            std::complex<double>(plans->spectrum[m][0], plans->spectrum[m][1]));
+          sum +=
+            wave_vector(m).first * (symbol[m] * double(n_points)).imag() * q2;
+        }
+    return 2. * V * std::pow(dx, dim - 1) * sum / double(n_points);
   }
+
+
+  template class SurfaceCompliance<2>;
+  template class SurfaceCompliance<3>;
 } // namespace viscoslide

@@ -66,8 +66,13 @@ namespace viscoslide
   {
     const Vector<double> old_u = u;
     const unsigned int   n_old = old_u.size();
-    compliance                 = std::make_unique<SurfaceCompliance>(
-      substrate, thickness, material, prm.material.poisson_ratio, n, dx);
+    compliance =
+      std::make_unique<SurfaceCompliance<2>>(substrate,
+                                             thickness,
+                                             material,
+                                             prm.material.poisson_ratio,
+                                             std::array<unsigned int, 1>{{n}},
+                                             dx);
     compliance->set_speed(V_hat * scales.eps / scales.tau_ref);
     x.resize(n);
     h.resize(n);

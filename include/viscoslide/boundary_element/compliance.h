@@ -1,16 +1,21 @@
 // The viscoelastic surface compliance of the boundary-element solver: the
 // vertical displacement of the top surface under a vertical traction that
-// slides at speed V, for a periodic half-plane or a periodic layer bonded
-// to a rigid base, on a uniform grid (doc/boundary_element.md).
+// slides at speed V towards +x, for a periodic half-space or a periodic
+// layer bonded to a rigid base, on a uniform grid of the surface: a line
+// of points for dim = 2 (plane strain), a plane of points for dim = 3
+// (doc/boundary_element.md).
 //
-// In the frame of the indenter a surface field exp(i k x) is, for the
-// material, a load of angular frequency omega = -k V, so that
-//     u_k = K(k) q_k / E*(-k V),
-// K = 2/|k| for the half-plane, 2 Phi(|k| t)/|k| for the layer, and E*(w)
-// the complex plane-strain modulus of the Prony series (doc/model.md).
-// FFTW applies it; the k = 0 mode of the half-plane, whose compliance is
-// infinite, is the reference of u: the mean surface displacement over the
-// period is zero.
+// In the frame of the indenter a surface field exp(i k.x) is, for the
+// material, a load of angular frequency omega = -k_x V, so that
+//     u_k = K(|k|) q_k / E*(-k_x V),
+// K = 2/|k| for the half-space, 2 Phi(|k| t)/|k| for the layer, and E*(w)
+// the complex modulus E/(1 - nu^2) of the Prony series (doc/model.md):
+// the same function of |k| in plane strain and in 3D. FFTW applies it;
+// the k = 0 mode of the half-space, whose compliance is infinite, is the
+// reference of u: the mean surface displacement over the period is zero.
+//
+// The points are numbered with x fastest: point j sits at
+// x = (j mod n_x - n_x/2) dx and, in 3D, y = (j div n_x - n_y/2) dx.
 #ifndef viscoslide_boundary_element_compliance_h
 #define viscoslide_boundary_element_compliance_h
 
@@ -19,6 +24,7 @@
 #include <viscoslide/material.h>
 #include <viscoslide/parameters.h>
 
+#include <array>
 #include <complex>
 #include <memory>
 #include <vector>
@@ -27,18 +33,19 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  template <int dim>
   class SurfaceCompliance
   {
   public:
-    // n points of spacing dx (internal units) on one period; `material`
-    // gives the arms, nu the Poisson ratio of every branch; `thickness` is
-    // the layer's.
-    SurfaceCompliance(Parameters::Substrate    substrate,
-                      double                   thickness,
-                      const ViscoelasticSolid &material,
-                      double                   nu,
-                      unsigned int             n,
-                      double                   dx);
+    // n points per direction (n_x, and n_y in 3D) of spacing dx (internal
+    // units) on one period; `material` gives the arms, nu the Poisson ratio
+    // of every branch; `thickness` is the layer's.
+    SurfaceCompliance(Parameters::Substrate                    substrate,
+                      double                                   thickness,
+                      const ViscoelasticSolid                 &material,
+                      double                                   nu,
+                      const std::array<unsigned int, dim - 1> &n,
+                      double                                   dx);
     ~SurfaceCompliance();
     SurfaceCompliance(const SurfaceCompliance &) = delete;
     SurfaceCompliance &
@@ -64,7 +71,7 @@ namespace viscoslide
     impulse_response() const;
 
     // Rate of work the traction q does on the solid, V times the integral
-    // of -q du_y/dx over the period, from the loss part of C alone: in a
+    // of -q du/dx over the period, from the loss part of C alone: in a
     // steady state all of it is dissipated.
     double
     dissipation_rate(const Vector<double> &q) const;
@@ -80,21 +87,33 @@ namespace viscoslide
     std::complex<double>
     modulus(double omega) const;
 
-  private:
-    // |k| K(k), the elastic part at unit modulus; at k = 0 (layer only)
-    // the limit K(k) itself is used.
-    double
-    elastic_compliance(unsigned int m) const;
+    // The number of points.
+    unsigned int
+    size() const
+    {
+      return n_points;
+    }
 
-    const Parameters::Substrate substrate;
-    const double                thickness;
-    const ViscoelasticSolid    &material;
-    const double                nu;
-    const unsigned int          n;
-    const double                dx;
-    double                      V = 0;
-    // C at the wave numbers k_m = 2 pi m/(n dx), m = 0 .. n/2, including
-    // FFTW's normalisation 1/n.
+  private:
+    // K(|k|) at unit modulus; at k = 0 0 for the half-space (the reference
+    // of u), the limit t(1 - 2 nu)/(1 - nu)^2 for the layer.
+    double
+    elastic_compliance(double k) const;
+
+    // The wave vector (k_x, |k|) of spectral mode m, numbered as FFTW's
+    // real-to-complex transform stores them (k_x >= 0 fastest).
+    std::pair<double, double>
+    wave_vector(unsigned int m) const;
+
+    const Parameters::Substrate             substrate;
+    const double                            thickness;
+    const ViscoelasticSolid                &material;
+    const double                            nu;
+    const std::array<unsigned int, dim - 1> n;
+    const unsigned int                      n_points, n_modes;
+    const double                            dx;
+    double                                  V = 0;
+    // C at each mode's wave vector, including FFTW's normalisation 1/n.
     std::vector<std::complex<double>> symbol;
     // FFTW's plans and buffers, kept out of this header.
     struct Plans;

@@ -172,11 +172,11 @@ namespace viscoslide
     // describes: during the approach of a half-plane the block of Domain
     // height on a rigid base, as in the finite elements (doc/
     // boundary_element.md, Approach).
-    const double                       dx;
-    Parameters::Substrate              substrate;
-    double                             thickness;
-    std::unique_ptr<SurfaceCompliance> compliance;
-    std::vector<double>                x, h;
+    const double                          dx;
+    Parameters::Substrate                 substrate;
+    double                                thickness;
+    std::unique_ptr<SurfaceCompliance<2>> compliance;
+    std::vector<double>                   x, h;
 
     // The state.
     Vector<double> u;

@@ -22,13 +22,13 @@ namespace viscoslide
   class BoundaryElementSolver::WindowPreconditioner
   {
   public:
-    WindowPreconditioner(const SurfaceCompliance &compliance,
-                         const Vector<double>    &tangent,
-                         const double             dashpot,
-                         const unsigned int       first,
-                         const unsigned int       m,
-                         const bool               force,
-                         const double             force_scale)
+    WindowPreconditioner(const SurfaceCompliance<2> &compliance,
+                         const Vector<double>       &tangent,
+                         const double                dashpot,
+                         const unsigned int          first,
+                         const unsigned int          m,
+                         const bool                  force,
+                         const double                force_scale)
       : compliance(compliance)
       , first(first)
       , m(m)
@@ -98,10 +98,10 @@ namespace viscoslide
     }
 
   private:
-    const SurfaceCompliance &compliance;
-    const unsigned int       first, m;
-    const bool               force;
-    Vector<double>           weight, load_weight;
+    const SurfaceCompliance<2> &compliance;
+    const unsigned int          first, m;
+    const bool                  force;
+    Vector<double>              weight, load_weight;
     // Single precision: as a preconditioner it need not be exact, and both
     // the factorization and the solves (which read the whole factor from
     // memory) take half the time.

@@ -5,6 +5,7 @@ and parameter files changed by the viscoslide package (python/viscoslide:
 tables.read, prm.override), which this module puts on sys.path from the
 checkout it sits in, so the checks use that checkout's package whether or
 not scripts/setup made it importable. Standard library only."""
+import json
 import os
 import subprocess
 import sys
@@ -36,16 +37,23 @@ def run(viscoslide, prm_text, work_dir, name, nproc=1, mpiexec='mpirun'):
 
 
 class Checker:
-    """Collects named checks; prints a numdiff-friendly summary."""
+    """Collects named checks; prints a numdiff-friendly summary, and at
+    finish() writes every check with its detail (what was measured against
+    which tolerance) to check_summary.json in the work folder (argv[1]),
+    the source of the generated table doc/test_results.md
+    (scripts/test_table)."""
 
     def __init__(self):
         self.failed = []
+        self.records = []
 
     def value(self, name, v, digits=6):
         print(f'{name} = {v:.{digits}g}')
+        self.records.append({'value': name, 'printed': f'{v:.{digits}g}'})
 
     def check(self, name, ok, detail):
         print(f'{name}: {"PASS" if ok else "FAIL"}')
+        self.records.append({'check': name, 'pass': bool(ok), 'detail': str(detail)})
         if not ok:
             self.failed.append(name)
             sys.stderr.write(f'{name} FAILED: {detail}\n')
@@ -53,4 +61,8 @@ class Checker:
             sys.stderr.write(f'{name}: {detail}\n')
 
     def finish(self):
+        work = sys.argv[1] if len(sys.argv) > 1 else ''
+        if os.path.isdir(work):
+            with open(os.path.join(work, 'check_summary.json'), 'w') as f:
+                json.dump({'failed': self.failed, 'records': self.records}, f, indent=1)
         sys.exit(1 if self.failed else 0)

@@ -151,7 +151,8 @@ namespace viscoslide
     void
     write_sweep_table(const fs::path &directory, const std::vector<Case> &cases)
     {
-      const auto         columns = SteadyStateTable::columns();
+      const auto columns = SteadyStateTable::columns(
+        cases.empty() ? 2 : cases.front().parameters.geometry.dimension);
       std::ostringstream out;
       out << "# " << version_string() << "; sweep of " << cases.size()
           << " cases, one folder each\ncase,status,reason";

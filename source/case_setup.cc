@@ -3,6 +3,8 @@
 #include <viscoslide/parameters.h>
 #include <viscoslide/scales.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,6 +14,7 @@ namespace viscoslide
 {
   namespace CaseSetup
   {
+
     using namespace Parameters;
 
     namespace
@@ -198,6 +201,41 @@ namespace viscoslide
         }
     }
 
+    // A plane grid of the boundary elements must fit in memory at the
+    // fastest speed (whose wake sets the period along x): refused before
+    // anything is written, with the entries to change. The solver checks
+    // each grid again against the memory it finds.
+    void
+    check_plane_grid_fits(const AllParameters &p,
+                          const double         spacing,
+                          const double         width)
+    {
+      double fastest = 0;
+      for (const double V : p.sliding.speeds)
+        fastest = std::max(fastest, V);
+      const double length = p.boundary_element.period > 0
+                              ? p.boundary_element.period
+                              : std::max(width,
+                                         p.boundary_element.wake_periods *
+                                           fastest * longest_creep_time(p));
+      const double points = (length / spacing) * (width / spacing);
+      // GMRES keeps up to 102 vectors of the grid, the rest about 40; four
+      // fifths of this machine's memory may go to them.
+      const double gigabytes          = 150. * 8. * points / 1e9;
+      const double max_grid_gigabytes = 0.8 * double(sysconf(_SC_PHYS_PAGES)) *
+                                        double(sysconf(_SC_PAGE_SIZE)) / 1e9;
+      std::ostringstream message;
+      message << "the 3D boundary-element grid of " << points << " points ("
+              << length << " x " << width << " eps at "
+              << "spacing " << spacing << " eps) needs about " << gigabytes
+              << " GB, this machine has " << max_grid_gigabytes / 0.8
+              << " GB: raise 'Boundary element/Grid spacing' "
+                 "or lower 'Geometry/Domain width', 'Boundary element/"
+                 "Period' or 'Boundary element/Wake periods'";
+      require(gigabytes <= max_grid_gigabytes, message.str());
+    }
+
+
     void
     check_consistency(const AllParameters &p)
     {
@@ -229,6 +267,16 @@ namespace viscoslide
               "'Sweep/Solvers' with 'transient' needs a single 'Sliding/"
               "Sliding speed' (the transient solver runs each listed speed "
               "as a case of its own; the steady solvers follow the list)");
+      require(p.geometry.dimension == 2 ||
+                (p.sliding.solver == SlidingSolver::boundary_element &&
+                 std::all_of(p.sweep.solvers.begin(),
+                             p.sweep.solvers.end(),
+                             [](const SlidingSolver s) {
+                               return s == SlidingSolver::boundary_element;
+                             })),
+              "'Geometry/Dimension' = 3 needs 'Sliding/Solver' = "
+              "boundary-element (and no other in 'Sweep/Solvers'): the "
+              "finite elements are plane strain");
       if (p.sliding.solver == SlidingSolver::boundary_element)
         {
           require(p.sliding.control != Control::spring,
@@ -237,7 +285,7 @@ namespace viscoslide
                   "displacement");
           require(p.sliding.control == Control::force ||
                     p.geometry.substrate == Substrate::layer ||
-                    p.sliding.speed == 0,
+                    p.sliding.speed == 0 || p.geometry.dimension == 3,
                   "'Sliding/Solver' = boundary-element on a half-plane "
                   "needs 'Sliding/Control' = force: the periodic "
                   "half-plane has no depth to measure delta from");
@@ -255,6 +303,8 @@ namespace viscoslide
                     " and the period " + std::to_string(L) + " eps give " +
                     std::to_string(L / h) +
                     " grid points; between 64 and 1e8 are allowed");
+          if (p.geometry.dimension == 3)
+            check_plane_grid_fits(p, h, L);
         }
     }
   } // namespace CaseSetup

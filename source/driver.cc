@@ -53,7 +53,12 @@ namespace viscoslide
           CaseParts   parts(c.parameters, comm, &progress);
           const auto &sliding = c.parameters.sliding;
           if (sliding.solver == Parameters::SlidingSolver::boundary_element)
-            BoundaryElementSolver(parts).run();
+            {
+              if (c.parameters.geometry.dimension == 3)
+                BoundaryElementSolver<3>(parts).run();
+              else
+                BoundaryElementSolver<2>(parts).run();
+            }
           else if (sliding.solver == Parameters::SlidingSolver::steady_state &&
                    sliding.speed > 0)
             run_steady_state(parts, resume);

@@ -127,6 +127,16 @@ namespace viscoslide
     Geometry::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
+      prm.declare_entry(
+        "Dimension",
+        "2",
+        Patterns::Integer(2, 3),
+        "2: plane strain, the indenter a cylinder (its profile h(x)) on a "
+        "block or layer. 3: the indenter the body of revolution h(r) of "
+        "its shape (a sphere for 'circle', a paraboloid for 'parabola') on "
+        "a half-space or a layer, by Sliding/Solver = boundary-element; "
+        "forces in 1.5 pi dgamma R, contact areas in pi R eps "
+        "(doc/conventions.md).");
       prm.declare_entry("Substrate",
                         "half-plane",
                         Patterns::Selection(choice_pattern<Substrate>()),
@@ -172,6 +182,7 @@ namespace viscoslide
     Geometry::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
+      dimension = prm.get_integer("Dimension");
       substrate =
         parse_choice<Substrate>(prm.get("Substrate"), "Geometry/Substrate");
       layer_thickness = prm.get_double("Layer thickness");

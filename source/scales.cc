@@ -13,7 +13,11 @@ namespace viscoslide
     , dgamma(std::sqrt(std::pow(p.adhesion.tabor_parameter, 3) /
                        p.adhesion.R_over_eps))
     , sigma_max(16. * dgamma / (9. * std::sqrt(3.) * eps))
-    , force(std::cbrt(M_PI * dgamma * dgamma * E0_star * R))
+    , force(p.geometry.dimension == 3
+              ? 1.5 * M_PI * dgamma * R
+              : std::cbrt(M_PI * dgamma * dgamma * E0_star * R))
+    , contact(p.geometry.dimension == 3 ? M_PI * R * eps : R)
+    , dimension(p.geometry.dimension)
     , tau_arm(p.material.time_constant == Parameters::TimeConstant::relaxation
                 ? 1.
                 : p.material.E0_over_Einf)

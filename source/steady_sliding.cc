@@ -19,7 +19,8 @@ namespace viscoslide
                                                 "F_t_hat",
                                                 "mu",
                                                 "mu_energy",
-                                                "L_hat",
+                                                contact_column(
+                                                  prm.geometry.dimension),
                                                 "newton_iterations",
                                                 "n_dofs"};
       const std::string              path    = writer.path("continuation.csv");
@@ -58,7 +59,8 @@ namespace viscoslide
            {"F_t_hat", F::format(q.tangential_force / scales.force)},
            {"mu", F::format(std::abs(q.tangential_force / Fn))},
            {"mu_energy", F::format(std::abs(rate / V / Fn))},
-           {"L_hat", F::format(q.contact_length / scales.R)},
+           {contact_column(scales.dimension),
+            F::format(q.contact_length / scales.contact)},
            {"newton_iterations", std::to_string(solver.newton_iterations())},
            {"n_dofs", std::to_string(solver.n_unknowns())}});
       }

@@ -23,7 +23,10 @@ namespace viscoslide
   SteadyStateTable::resume(const std::size_t keep_rows)
   {
     if (keep_rows > 0)
-      table = std::make_unique<CsvTable>(filename, columns(), keep_rows, comm);
+      table = std::make_unique<CsvTable>(filename,
+                                         columns(prm.geometry.dimension),
+                                         keep_rows,
+                                         comm);
   }
 
 
@@ -37,27 +40,30 @@ namespace viscoslide
 
 
   std::vector<std::string>
-  SteadyStateTable::columns()
+  SteadyStateTable::columns(const int dimension)
   {
-    return {"control",
-            "mu_T",
-            "R_hat",
-            "substrate",
-            "t_hat",
-            "V_hat",
-            "delta_hat",
-            "F_n_hat",
-            "F_t_hat",
-            "F_t_contact_set_hat",
-            "mu",
-            "mu_contact_set",
-            "mu_energy",
-            "L_hat",
-            "dissipation_rate_hat",
-            "steady",
-            "sliding_distance_over_eps",
-            "time_constant",
-            "solver"};
+    std::vector<std::string> c = {"control",
+                                  "mu_T",
+                                  "R_hat",
+                                  "substrate",
+                                  "t_hat",
+                                  "V_hat",
+                                  "delta_hat",
+                                  "F_n_hat",
+                                  "F_t_hat",
+                                  "F_t_contact_set_hat",
+                                  "mu",
+                                  "mu_contact_set",
+                                  "mu_energy",
+                                  contact_column(dimension),
+                                  "dissipation_rate_hat",
+                                  "steady",
+                                  "sliding_distance_over_eps",
+                                  "time_constant",
+                                  "solver"};
+    if (dimension == 3)
+      c.insert(c.end(), {"x_trail_over_R", "x_lead_over_R", "y_half_over_R"});
+    return c;
   }
 
 
@@ -78,34 +84,44 @@ namespace viscoslide
     const double mu_energy      = std::abs(dissipation_rate / V / Fn);
     using F                     = CsvTable;
     if (!table)
-      table =
-        std::make_unique<CsvTable>(filename, columns(), version_string(), comm);
-    table->add_row(
-      {{"control", Parameters::to_string(prm.sliding.control)},
-       {"mu_T", F::format(prm.adhesion.tabor_parameter)},
-       {"R_hat", F::format(prm.adhesion.R_over_eps)},
-       {"substrate", Parameters::to_string(prm.geometry.substrate)},
-       {"t_hat", F::format(t_hat(prm))},
-       {"V_hat", F::format(V_hat)},
-       {"delta_hat", F::format(delta / scales.eps)},
-       {"F_n_hat", F::format(Fn / scales.force)},
-       {"F_t_hat", F::format(Ft / scales.force)},
-       {"F_t_contact_set_hat",
-        F::format(q.contact_set_tangential_force / scales.force)},
-       {"mu", F::format(mu)},
-       {"mu_contact_set", F::format(mu_contact_set)},
-       {"mu_energy", F::format(mu_energy)},
-       {"L_hat", F::format(q.contact_length / scales.R)},
-       {"dissipation_rate_hat",
-        F::format(dissipation_rate * scales.tau_ref /
-                  (scales.force * scales.eps))},
-       {"steady", steady ? "1" : "0"},
-       {"sliding_distance_over_eps", F::format(distance)},
-       {"time_constant", Parameters::to_string(prm.material.time_constant)},
-       {"solver", Parameters::to_string(solver)}});
+      table = std::make_unique<CsvTable>(filename,
+                                         columns(scales.dimension),
+                                         version_string(),
+                                         comm);
+    CsvTable::Row row = {
+      {"control", Parameters::to_string(prm.sliding.control)},
+      {"mu_T", F::format(prm.adhesion.tabor_parameter)},
+      {"R_hat", F::format(prm.adhesion.R_over_eps)},
+      {"substrate", Parameters::to_string(prm.geometry.substrate)},
+      {"t_hat", F::format(t_hat(prm))},
+      {"V_hat", F::format(V_hat)},
+      {"delta_hat", F::format(delta / scales.eps)},
+      {"F_n_hat", F::format(Fn / scales.force)},
+      {"F_t_hat", F::format(Ft / scales.force)},
+      {"F_t_contact_set_hat",
+       F::format(q.contact_set_tangential_force / scales.force)},
+      {"mu", F::format(mu)},
+      {"mu_contact_set", F::format(mu_contact_set)},
+      {"mu_energy", F::format(mu_energy)},
+      {contact_column(scales.dimension),
+       F::format(q.contact_length / scales.contact)},
+      {"dissipation_rate_hat",
+       F::format(dissipation_rate * scales.tau_ref /
+                 (scales.force * scales.eps))},
+      {"steady", steady ? "1" : "0"},
+      {"sliding_distance_over_eps", F::format(distance)},
+      {"time_constant", Parameters::to_string(prm.material.time_constant)},
+      {"solver", Parameters::to_string(solver)}};
+    if (scales.dimension == 3)
+      row.insert(row.end(),
+                 {{"x_trail_over_R", F::format(q.x_trail / scales.R)},
+                  {"x_lead_over_R", F::format(q.x_lead / scales.R)},
+                  {"y_half_over_R", F::format(q.y_half / scales.R)}});
+    table->add_row(row);
     out << "mu = " << mu << ", mu_contact_set = " << mu_contact_set
-        << ", mu_energy = " << mu_energy
-        << ", L_hat = " << q.contact_length / scales.R
+        << ", mu_energy = " << mu_energy << ", "
+        << contact_column(scales.dimension) << " = "
+        << q.contact_length / scales.contact
         << ", F_n_hat = " << Fn / scales.force << std::endl;
     // The traction law is conservative, so in a steady state the work of
     // the x force on the indenter equals the dissipation (doc/model.md,

@@ -29,11 +29,14 @@ namespace viscoslide
     // The 'Geometry' section: the block or the layer.
     struct Geometry
     {
-      Substrate substrate;
-      double    layer_thickness;
-      double    domain_width;
-      double    domain_height;
-      double    wake_lengths;
+      // 2: plane strain, a cylinder on a block; 3: a body of revolution
+      // (a sphere) on a half-space or layer, boundary elements only.
+      unsigned int dimension;
+      Substrate    substrate;
+      double       layer_thickness;
+      double       domain_width;
+      double       domain_height;
+      double       wake_lengths;
 
       static void
       declare(ParameterHandler &prm);

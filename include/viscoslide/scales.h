@@ -24,10 +24,24 @@ namespace viscoslide
     double Einf_star; // plane-strain instantaneous modulus
     double dgamma;    // work of adhesion, sqrt(muT^3/R_hat) E0* eps
     double sigma_max; // Lennard-Jones peak traction
-    double force;     // (pi dgamma^2 E0* R)^(1/3), the F_hat unit
+    // The F_hat unit: in 2D (pi dgamma^2 E0* R)^(1/3) (per unit length),
+    // in 3D 1.5 pi dgamma R (the JKR pull-off of the relaxed sphere).
+    double force;
+    // The unit of the contact's measure: in 2D R (L_hat = L/R), in 3D
+    // pi R eps (A_hat = A/(pi R eps), delta/eps for Hertz).
+    double contact;
+    int    dimension; // of the problem, 2 or 3
     double tau_arm;   // relaxation time of the Maxwell arm
     double tau_ref;   // the time unit of V_hat and time_over_tau (= 1)
   };
+
+  // The name of the contact's measure in the tables: L_hat = L/R in 2D,
+  // A_hat = A/(pi R eps) in 3D (Scales::contact).
+  inline const char *
+  contact_column(const int dim)
+  {
+    return dim == 3 ? "A_hat" : "L_hat";
+  }
 
   // The solid of the parameters in internal units: E0 = 1 - nu^2, so that
   // E0* = 1, and the arms' times in tau_ref.

@@ -30,9 +30,10 @@ namespace viscoslide
                      MPI_Comm                         comm);
 
     // The columns, also for the sweep driver's row of a case that failed
-    // before writing its own.
+    // before writing its own: in 3D A_hat for L_hat and the contact's
+    // extents x_trail/R, x_lead/R, y_half/R at the end.
     static std::vector<std::string>
-    columns();
+    columns(int dimension);
 
     // The layer thickness in eps, infinite for a half-plane, so that the
     // column stays numeric.

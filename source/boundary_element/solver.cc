@@ -34,7 +34,8 @@ namespace viscoslide
   } // namespace
 
 
-  BoundaryElementSolver::BoundaryElementSolver(CaseParts &parts)
+  template <int dim>
+  BoundaryElementSolver<dim>::BoundaryElementSolver(CaseParts &parts)
     : prm(parts.prm)
     , comm(parts.comm)
     , pcout(std::cout,
@@ -52,51 +53,91 @@ namespace viscoslide
             ? prm.boundary_element.grid_spacing
             : prm.mesh.finest_cell / 2) *
          scales.eps)
+    , dA(std::pow(dx, dim - 1))
     , substrate(Parameters::Substrate::layer)
     , thickness(prm.geometry.height() * scales.eps)
   {
   }
 
 
-  BoundaryElementSolver::~BoundaryElementSolver() = default;
+  template <int dim>
+  BoundaryElementSolver<dim>::~BoundaryElementSolver() = default;
 
 
+  template <int dim>
   void
-  BoundaryElementSolver::make_grid(const unsigned int n)
+  BoundaryElementSolver<dim>::make_grid(
+    const std::array<unsigned int, dim - 1> &new_shape)
   {
-    const Vector<double> old_u = u;
-    const unsigned int   n_old = old_u.size();
-    compliance =
-      std::make_unique<SurfaceCompliance<2>>(substrate,
-                                             thickness,
-                                             material,
-                                             prm.material.poisson_ratio,
-                                             std::array<unsigned int, 1>{{n}},
-                                             dx);
-    compliance->set_speed(V_hat * scales.eps / scales.tau_ref);
+    const Vector<double>                    old_u     = u;
+    const std::array<unsigned int, dim - 1> old_shape = shape;
+    shape                                             = new_shape;
+    const unsigned int n_x = shape[dim - 2], n_y = dim == 2 ? 1 : shape[0];
+    const unsigned int n = n_x * n_y;
+    compliance           = std::make_unique<SurfaceCompliance<dim>>(
+      substrate, thickness, material, prm.material.poisson_ratio, shape, dx);
+    const double V = V_hat * scales.eps / scales.tau_ref;
+    compliance->set_speed(V);
+    if constexpr (dim == 3)
+      {
+        multigrid =
+          std::make_unique<SurfaceMultigrid<dim>>(substrate,
+                                                  thickness,
+                                                  material,
+                                                  prm.material.poisson_ratio,
+                                                  shape,
+                                                  dx);
+        multigrid->set_speed(V);
+      }
     x.resize(n);
+    y.resize(n);
     h.resize(n);
+    slope.resize(n);
     u.reinit(n);
+    const unsigned int old_x = old_shape[dim - 2],
+                       old_y = dim == 2 ? 1 : old_shape[0];
     for (unsigned int j = 0; j < n; ++j)
       {
-        x[j] = (double(j) - n / 2) * dx;
-        h[j] = indenter.profile(x[j]);
-        // The same x on the old grid; beyond it, its nearer end.
-        if (n_old > 0)
+        const long i_x = j % n_x, i_y = j / n_x;
+        x[j] = (double(i_x) - n_x / 2) * dx;
+        y[j] = dim == 2 ? 0. : (double(i_y) - n_y / 2) * dx;
+        // In 3D the body of revolution of the profile.
+        const double r = dim == 2 ? x[j] : std::hypot(x[j], y[j]);
+        h[j]           = indenter.profile(r);
+        slope[j]       = dim == 2 ? indenter.slope(x[j])
+                                  : (r > 0 ? indenter.slope(r) * x[j] / r : 0.);
+        // The same point on the old grid; beyond it, its nearer end.
+        if (old_u.size() > 0)
           {
-            const long i =
-              std::clamp<long>(long(j) - n / 2 + n_old / 2, 0, long(n_old) - 1);
-            u[j] = old_u[i];
+            const long o_x = std::clamp<long>(i_x - n_x / 2 + old_x / 2,
+                                              0,
+                                              long(old_x) - 1),
+                       o_y = std::clamp<long>(i_y - n_y / 2 + old_y / 2,
+                                              0,
+                                              long(old_y) - 1);
+            u[j]           = old_u[o_y * old_x + o_x];
           }
       }
+    level_offset = dim == 3 && substrate == Parameters::Substrate::half_plane
+                     ? mean_level_offset()
+                     : 0.;
     preconditioner.reset();
-    pcout << "Boundary-element grid: " << n << " points, spacing " << dx
-          << " eps, period " << n * dx << " eps" << std::endl;
+    pcout << "Boundary-element grid: " << n << " points";
+    if (dim == 3)
+      pcout << " (" << n_x << " x " << n_y << ")";
+    pcout << ", spacing " << dx << " eps, period " << n_x * dx;
+    if (dim == 3)
+      pcout << " x " << n_y * dx;
+    pcout << " eps";
+    if (multigrid)
+      pcout << ", " << multigrid->n_levels() << " multigrid levels";
+    pcout << std::endl;
   }
 
 
+  template <int dim>
   void
-  BoundaryElementSolver::fit_period(const double V)
+  BoundaryElementSolver<dim>::fit_period(const double V)
   {
     const double wake = V * longest_creep_time(prm) * scales.eps;
     const double period =
@@ -104,9 +145,98 @@ namespace viscoslide
         ? prm.boundary_element.period * scales.eps
         : std::max(prm.geometry.domain_width * scales.eps,
                    prm.boundary_element.wake_periods * wake);
-    const unsigned int n = fft_size(period / dx);
-    if (n > u.size() || 4 * n < u.size())
-      make_grid(n);
+    // In 3D, x and y coarsen together in the multigrid: both counts a
+    // multiple of 2^levels, so that the coarsest grid is small.
+    const unsigned int                multiple = dim == 2 ? 1 : 16;
+    std::array<unsigned int, dim - 1> new_shape;
+    new_shape[dim - 2] = multiple * fft_size(period / dx / multiple);
+    if constexpr (dim == 3)
+      new_shape[0] = multiple * fft_size(prm.geometry.domain_width *
+                                         scales.eps / dx / multiple);
+    const unsigned int n_x = new_shape[dim - 2], old_x = shape[dim - 2];
+    if (u.size() == 0 || n_x > old_x || 4 * n_x < old_x)
+      make_grid(new_shape);
+  }
+
+
+  template <int dim>
+  double
+  BoundaryElementSolver<dim>::mean_level_offset() const
+  {
+    // The relaxed periodic response to a unit force at the origin against
+    // Boussinesq's 1/(pi E0* r) of an isolated one, at 12 to 20 points
+    // from it along both axes: far enough for the grid's own error, near
+    // enough for the images' curvature (of order (r/period)^2) to vanish.
+    SurfaceCompliance<dim> relaxed(Parameters::Substrate::half_plane,
+                                   0.,
+                                   material,
+                                   prm.material.poisson_ratio,
+                                   shape,
+                                   dx);
+    const Vector<double>   response = relaxed.impulse_response();
+    const unsigned int     n_x      = shape[dim - 2];
+    double                 sum      = 0;
+    unsigned int           count    = 0;
+    for (unsigned int k = 12; k <= 20; ++k)
+      for (const unsigned int j : {k, n_x - k, k * n_x, (shape[0] - k) * n_x})
+        {
+          sum += 1. / (M_PI * scales.E0_star * k * dx) - response[j] / dA;
+          ++count;
+        }
+    return sum / count;
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::displacement_controlled() const
+  {
+    return !control.force_controlled || mean_level_spring;
+  }
+
+
+  template <int dim>
+  double &
+  BoundaryElementSolver<dim>::controlled_approach()
+  {
+    return mean_level_spring ? control.spring_delta : delta;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::hold_force(const double force)
+  {
+    mean_level_spring = false;
+    control.hold_force(force);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::hold_approach(const double approach)
+  {
+    // The periodic half-space's surface level is its mean over the
+    // period, not the far field: delta = delta_grid + c F_n, which is
+    // force control with a spring of stiffness 1/c.
+    mean_level_spring = level_offset > 0;
+    if (mean_level_spring)
+      control.hold_force(0., 1. / level_offset, approach);
+    else
+      {
+        control.hold_approach();
+        delta = approach;
+      }
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::set_compliance_speed(const double V)
+  {
+    compliance->set_speed(V);
+    if (multigrid)
+      multigrid->set_speed(V);
   }
 
 
@@ -140,8 +270,9 @@ namespace viscoslide
   } // namespace
 
 
+  template <int dim>
   void
-  BoundaryElementSolver::assemble(const bool with_matrix)
+  BoundaryElementSolver<dim>::assemble(const bool with_matrix)
   {
     TimerOutput::Scope t(timer, "boundary element: residual");
     const unsigned int n = u.size();
@@ -156,7 +287,7 @@ namespace viscoslide
         traction[j] = law.traction(gaps[j]);
         tangent[j]  = law.derivative(gaps[j]);
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
-        Fn -= traction[j] * dx;
+        Fn -= traction[j] * dA;
       }
     compliance->apply(w, Cw);
     residual.reinit(n + 1);
@@ -166,6 +297,28 @@ namespace viscoslide
                     ? control.mismatch(Fn, delta) / scales.sigma_max
                     : 0.;
     if (with_matrix)
+      update_preconditioner();
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::update_preconditioner()
+  {
+    const unsigned int n = u.size();
+    if constexpr (dim == 3)
+      {
+        TimerOutput::Scope t(timer, "boundary element: multigrid");
+        Vector<double>     weight(tangent);
+        weight.add(dashpot);
+        multigrid->update(weight,
+                          tangent,
+                          control.force_controlled,
+                          dA,
+                          control.spring_stiffness,
+                          scales.sigma_max);
+      }
+    else
       {
         // The points where the traction law is stiff, and a window about
         // them with a margin of an eighth of their width, so that the
@@ -211,8 +364,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   double
-  BoundaryElementSolver::residual_norm() const
+  BoundaryElementSolver<dim>::residual_norm() const
   {
     // The l2 norm of the displacement misfit: a smooth merit function for
     // the line search (the largest misfit alone stalled it at the contact
@@ -224,16 +378,20 @@ namespace viscoslide
     for (unsigned int j = 0; j < n; ++j)
       {
         misfit += residual[j] * residual[j];
-        absolute += std::abs(traction[j]) * dx;
+        absolute += std::abs(traction[j]) * dA;
       }
     const double load =
-      residual[n] * scales.sigma_max / (absolute + scales.sigma_max * dx);
+      residual[n] * scales.sigma_max / (absolute + scales.sigma_max * dA);
+    // In 3D per row of points, as a line of them is measured in 2D.
+    if (dim == 3)
+      misfit /= shape[0];
     return std::sqrt(misfit / (scales.eps * scales.eps) + load * load);
   }
 
 
+  template <int dim>
   void
-  BoundaryElementSolver::compute_update()
+  BoundaryElementSolver<dim>::compute_update()
   {
     TimerOutput::Scope t(timer, "boundary element: GMRES");
     const unsigned int n = u.size();
@@ -252,8 +410,10 @@ namespace viscoslide
             const double du = src[j];
             const double dd = s.control.force_controlled ? src[n] : 0.;
             w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
-            load += s.tangent[j] * (du + dd) * s.dx;
+            load += s.tangent[j] * (du + dd) * s.dA;
           }
+        load += s.control.spring_stiffness *
+                (s.control.force_controlled ? src[n] : 0.);
         s.compliance->apply(w, Cw);
         for (unsigned int j = 0; j < n; ++j)
           dst[j] = src[j] + Cw[j];
@@ -269,7 +429,10 @@ namespace viscoslide
       solver_control, SolverGMRES<Vector<double>>::AdditionalData(100));
     try
       {
-        gmres.solve(jacobian, update, rhs, *preconditioner);
+        if constexpr (dim == 3)
+          gmres.solve(jacobian, update, rhs, *multigrid);
+        else
+          gmres.solve(jacobian, update, rhs, *preconditioner);
         last_gmres_converged = true;
       }
     catch (SolverControl::NoConvergence &)
@@ -278,15 +441,21 @@ namespace viscoslide
         // next Jacobian gets a new factorization.
         last_gmres_converged = false;
       }
-    last_gmres_work =
-      gmres_work(n, preconditioner->size(), solver_control.last_step());
-    work_since_factorization += last_gmres_work;
-    ++solves_since_factorization;
+    gmres_iterations += solver_control.last_step();
+    ++gmres_solves;
+    if constexpr (dim == 2)
+      {
+        last_gmres_work =
+          gmres_work(n, preconditioner->size(), solver_control.last_step());
+        work_since_factorization += last_gmres_work;
+        ++solves_since_factorization;
+      }
   }
 
 
+  template <int dim>
   NewtonProblem
-  BoundaryElementSolver::newton_problem()
+  BoundaryElementSolver<dim>::newton_problem()
   {
     NewtonProblem p;
     p.assemble      = [this](const bool with_matrix) { assemble(with_matrix); };
@@ -314,8 +483,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   int
-  BoundaryElementSolver::solve()
+  BoundaryElementSolver<dim>::solve()
   {
     const Vector<double> u_start          = u;
     const double         delta_start      = delta;
@@ -359,14 +529,15 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   bool
-  BoundaryElementSolver::follow(const double                       from,
-                                const double                       to,
-                                const double                       step,
-                                const double                       min_step,
-                                const std::function<void(double)> &set,
-                                const std::function<void()>       &on_converged,
-                                const std::function<bool()>       &done)
+  BoundaryElementSolver<dim>::follow(const double from,
+                                     const double to,
+                                     const double step,
+                                     const double min_step,
+                                     const std::function<void(double)> &set,
+                                     const std::function<void()> &on_converged,
+                                     const std::function<bool()> &done)
   {
     double         at = from, size = step;
     double         at_before = 0, delta_before = 0;
@@ -421,9 +592,11 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   bool
-  BoundaryElementSolver::continue_to(const double                 target,
-                                     const std::function<void()> &on_converged)
+  BoundaryElementSolver<dim>::continue_to(
+    const double                 target,
+    const std::function<void()> &on_converged)
   {
     fit_period(std::max(V_hat, target));
     auto set_speed = [this, target](const double log_V) {
@@ -431,7 +604,7 @@ namespace viscoslide
         std::abs(log_V - std::log(target)) < 1e-12 ? target : std::exp(log_V);
       // The factorization of the speed before stays a good preconditioner
       // (it is renewed when GMRES needs too many iterations with it).
-      compliance->set_speed(V_hat * scales.eps / scales.tau_ref);
+      set_compliance_speed(V_hat * scales.eps / scales.tau_ref);
     };
     if (V_hat == 0)
       {
@@ -450,7 +623,7 @@ namespace viscoslide
         if (solve() < 0)
           {
             V_hat = 0;
-            compliance->set_speed(0);
+            set_compliance_speed(0);
             return false;
           }
         on_converged();
@@ -464,12 +637,14 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   bool
-  BoundaryElementSolver::continue_to_load(
+  BoundaryElementSolver<dim>::continue_to_load(
     const double                 target,
     const std::function<void()> &on_converged)
   {
-    double &parameter = control.force_controlled ? control.target_force : delta;
+    double &parameter =
+      displacement_controlled() ? controlled_approach() : control.target_force;
     const double distance = std::abs(target - parameter);
     return follow(
       parameter,
@@ -484,16 +659,17 @@ namespace viscoslide
   // Unloading in steps of the Approach increment down to Retract to; the
   // minimum force on the way is the pull-off force under displacement
   // control. The jump out of contact is relaxed as the jump in is.
+  template <int dim>
   void
-  BoundaryElementSolver::retract(
+  BoundaryElementSolver<dim>::retract(
     const std::function<void(const std::string &)> &add_row)
   {
     const auto report = [&] {
       add_row("retract");
-      pcout << "Retract delta_hat = " << delta / scales.eps
+      pcout << "Retract delta_hat = " << approach() / scales.eps
             << ": F_n_hat = " << last_quantities.normal_force / scales.force
-            << ", L_hat = " << last_quantities.contact_length / scales.R
-            << std::endl;
+            << ", " << contact_column(dim) << " = "
+            << last_quantities.contact_length / scales.contact << std::endl;
     };
     move_indenter(prm.loading.retract_to, "retraction", report);
   }
@@ -501,23 +677,24 @@ namespace viscoslide
 
   // delta to delta_hat = `to` in Approach increments, cut down to the
   // Minimum approach increment where a step fails.
+  template <int dim>
   void
-  BoundaryElementSolver::move_indenter(const double                 to,
-                                       const std::string           &phase,
-                                       const std::function<void()> &report,
-                                       const std::function<bool()> &done)
+  BoundaryElementSolver<dim>::move_indenter(const double                 to,
+                                            const std::string           &phase,
+                                            const std::function<void()> &report,
+                                            const std::function<bool()> &done)
   {
     if (!follow(
-          delta,
+          controlled_approach(),
           to * scales.eps,
           prm.loading.increment * scales.eps,
           prm.loading.minimum_increment * scales.eps,
-          [this](const double d) { delta = d; },
+          [this](const double d) { controlled_approach() = d; },
           report,
           done))
       throw std::runtime_error(
         "the boundary-element solver failed in the " + phase +
-        " at delta_hat = " + CsvTable::format(delta / scales.eps) +
+        " at delta_hat = " + CsvTable::format(approach() / scales.eps) +
         " (Newton's method and the relaxation did not converge with "
         "the Minimum approach increment)");
   }
@@ -525,8 +702,9 @@ namespace viscoslide
 
   // Under force control, the approach step that passed the Target load
   // (`reached`) solved again with F_n held at exactly that load.
+  template <int dim>
   void
-  BoundaryElementSolver::hold_target_load(
+  BoundaryElementSolver<dim>::hold_target_load(
     const bool                                      reached,
     const std::function<void(const std::string &)> &add_row)
   {
@@ -538,26 +716,29 @@ namespace viscoslide
         CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
         CsvTable::format(last_quantities.normal_force / scales.force) +
         "); raise the Final approach");
-    control.hold_force(F);
+    hold_force(F);
     preconditioner.reset();
     if (solve() < 0)
       throw std::runtime_error("the boundary-element solver could not "
                                "hold the Target load after the approach");
     add_row("load");
     pcout << "Load F_hat = " << prm.loading.target_load
-          << " reached at delta_hat = " << delta / scales.eps << std::endl;
+          << " reached at delta_hat = " << approach() / scales.eps << std::endl;
   }
 
 
+  template <int dim>
   void
-  BoundaryElementSolver::approach_phase()
+  BoundaryElementSolver<dim>::approach_phase()
   {
     TimerOutput::Scope t(timer, "boundary element: approach");
-    substrate = Parameters::Substrate::layer;
+    // In 2D on the block of Domain height; in 3D on the substrate itself,
+    // whose delta the mean-level correction measures from afar.
+    substrate =
+      dim == 3 ? prm.geometry.substrate : Parameters::Substrate::layer;
     thickness = prm.geometry.height() * scales.eps;
     fit_period(0.);
-    control.hold_approach();
-    delta = prm.loading.initial_approach * scales.eps;
+    hold_approach(prm.loading.initial_approach * scales.eps);
     if (solve() < 0)
       throw std::runtime_error(
         "the boundary-element solver found no equilibrium at the initial "
@@ -570,7 +751,7 @@ namespace viscoslide
                         "phase",
                         "delta_hat",
                         "F_n_hat",
-                        "L_hat",
+                        contact_column(dim),
                         "min_gap_over_eps",
                         "newton_iterations",
                         "n_dofs"},
@@ -583,9 +764,10 @@ namespace viscoslide
       table.add_row(
         {{"step", std::to_string(step++)},
          {"phase", phase},
-         {"delta_hat", CsvTable::format(delta / scales.eps)},
+         {"delta_hat", CsvTable::format(approach() / scales.eps)},
          {"F_n_hat", CsvTable::format(q.normal_force / scales.force)},
-         {"L_hat", CsvTable::format(q.contact_length / scales.R)},
+         {contact_column(dim),
+          CsvTable::format(q.contact_length / scales.contact)},
          {"min_gap_over_eps", CsvTable::format(q.minimum_gap / scales.eps)},
          {"newton_iterations", std::to_string(last_newton_iterations)},
          {"n_dofs", std::to_string(n_unknowns())}});
@@ -593,9 +775,10 @@ namespace viscoslide
     add_row("start");
     auto report = [&] {
       add_row("approach");
-      pcout << "Approach delta_hat = " << delta / scales.eps
+      pcout << "Approach delta_hat = " << approach() / scales.eps
             << ": F_n_hat = " << last_quantities.normal_force / scales.force
-            << ", L_hat = " << last_quantities.contact_length / scales.R << " ("
+            << ", " << contact_column(dim) << " = "
+            << last_quantities.contact_length / scales.contact << " ("
             << last_newton_iterations << " Newton iterations)" << std::endl;
       done =
         prm.loading.has_target_load() &&
@@ -609,26 +792,27 @@ namespace viscoslide
       hold_target_load(done, add_row);
     if (prm.loading.retract)
       {
-        control.hold_approach();
+        hold_approach(approach());
         retract(add_row);
       }
   }
 
 
+  template <int dim>
   void
-  BoundaryElementSolver::run()
+  BoundaryElementSolver<dim>::run()
   {
     approach_phase();
     if (prm.sliding.control == Parameters::Control::force)
-      control.hold_force(last_quantities.normal_force);
+      hold_force(last_quantities.normal_force);
     else
-      control.hold_approach();
-    if (prm.geometry.substrate == Parameters::Substrate::half_plane)
+      hold_approach(approach());
+    if (dim == 2 && prm.geometry.substrate == Parameters::Substrate::half_plane)
       {
         // From the block of the approach to the half-plane, at the load
         // of the approach.
         substrate = Parameters::Substrate::half_plane;
-        make_grid(u.size());
+        make_grid(shape);
         if (solve() < 0)
           throw std::runtime_error(
             "the boundary-element solver could not carry the state of the "
@@ -653,6 +837,14 @@ namespace viscoslide
       }
     else
       write_profile(writer.path("surface_profile_final.csv"));
+    pcout << "GMRES: " << gmres_iterations << " iterations in " << gmres_solves
+          << " solves ("
+          << (gmres_solves > 0 ? double(gmres_iterations) / gmres_solves : 0.)
+          << " per Newton step)" << std::endl;
     timer.print_wall_time_statistics(comm);
   }
+
+
+  template class BoundaryElementSolver<2>;
+  template class BoundaryElementSolver<3>;
 } // namespace viscoslide

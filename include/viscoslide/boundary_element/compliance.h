@@ -65,6 +65,18 @@ namespace viscoslide
     void
     apply(const Vector<double> &q, Vector<double> &u) const;
 
+    // q = K u with K the inverse of C, the surface stiffness; for the
+    // half-space's k = 0 mode (no compliance) the stiffness of the
+    // longest wave instead, so that K is regular. For the multigrid
+    // preconditioner (multigrid_preconditioner.h).
+    void
+    apply_stiffness(const Vector<double> &u, Vector<double> &q) const;
+
+    // The diagonal of K (the same at every point): the mean of its real
+    // symbol over the modes.
+    double
+    stiffness_diagonal() const;
+
     // The displacement at every point under a unit force at point 0 (the
     // first column of the circulant matrix of C).
     Vector<double>
@@ -100,6 +112,11 @@ namespace viscoslide
     double
     elastic_compliance(double k) const;
 
+    // 1/symbol[m] (n times the stiffness of mode m), with the k = 0 mode
+    // of the half-space replaced as apply_stiffness() says.
+    std::complex<double>
+    stiffness_symbol(unsigned int m) const;
+
     // The wave vector (k_x, |k|) of spectral mode m, numbered as FFTW's
     // real-to-complex transform stores them (k_x >= 0 fastest).
     std::pair<double, double>
@@ -113,8 +130,9 @@ namespace viscoslide
     const unsigned int                      n_points, n_modes;
     const double                            dx;
     double                                  V = 0;
-    // C at each mode's wave vector, including FFTW's normalisation 1/n.
-    std::vector<std::complex<double>> symbol;
+    // C at each mode's wave vector, including FFTW's normalisation 1/n,
+    // and K with it.
+    std::vector<std::complex<double>> symbol, stiffness;
     // FFTW's plans and buffers, kept out of this header.
     struct Plans;
     std::unique_ptr<Plans> plans;

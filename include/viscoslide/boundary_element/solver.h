@@ -3,13 +3,17 @@
 //
 // Only the top surface is discretised: the vertical displacement u_j at
 // the points x_j of a uniform periodic grid centred on the indenter's
-// apex. In the indenter's frame the steady state solves
+// apex, a line of points in plane strain (dim = 2), a plane of them in 3D
+// (the indenter then the body of revolution of its profile). In the
+// indenter's frame the steady state solves
 //     u = C q(g),   g_j = eps + h(x_j) - delta - u_j,
 // with C the viscoelastic surface compliance at the sliding speed
 // (compliance.h) and q the traction law, plus, under force control, the
 // load equation integral of -q = F_n with delta unknown. Newton's method
-// (newton.h) solves it, its linear systems by GMRES with the dense
-// Jacobian of the points near the contact as preconditioner; the approach
+// (newton.h) solves it, its linear systems by GMRES, preconditioned in 2D
+// by the dense Jacobian of the points near the contact
+// (window_preconditioner.h), in 3D by multigrid on the surface grid
+// (multigrid_preconditioner.h); the approach
 // is a sequence of relaxed (V = 0) states, the speeds and loads follow by
 // continuation, as in the finite-element steady-state solver.
 //
@@ -24,6 +28,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/multigrid_preconditioner.h>
 #include <viscoslide/case.h>
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
@@ -43,6 +48,7 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  template <int dim>
   class BoundaryElementSolver : public SteadySliding
   {
   public:
@@ -68,10 +74,12 @@ namespace viscoslide
     {
       return V_hat;
     }
+    // The approach measured from the far field: in 3D on a half-space the
+    // grid's delta plus the mean-level correction.
     double
     approach() const override
     {
-      return delta;
+      return delta + level_offset * last_quantities.normal_force;
     }
     const SurfaceQuantities &
     quantities() const override
@@ -106,11 +114,34 @@ namespace viscoslide
   private:
     // The grid for the period this speed needs (Boundary element/Period):
     // rebuilt when it must grow or can shrink four-fold, the state carried
-    // over at equal x. [solver.cc]
+    // over at equal x. In 3D the period across the track is the Domain
+    // width. [solver.cc]
     void
     fit_period(double V_hat);
     void
-    make_grid(unsigned int n_points);
+    make_grid(const std::array<unsigned int, dim - 1> &shape);
+    // The periodic half-space's mean level lies above the far field of an
+    // isolated contact by c F_n; c from the relaxed impulse response
+    // against Boussinesq's solution. [solver.cc]
+    double
+    mean_level_offset() const;
+    // Displacement control: delta given, or in 3D on a half-space the
+    // approach from afar given through the spring of the mean level; the
+    // parameter displacement control steps. [solver.cc]
+    void
+    hold_approach(double approach);
+    void
+    hold_force(double force);
+    bool
+    displacement_controlled() const;
+    double &
+    controlled_approach();
+    // The compliance (and the multigrid's) at sliding speed V. [solver.cc]
+    void
+    set_compliance_speed(double V);
+    // The preconditioner for the present Jacobian. [solver.cc]
+    void
+    update_preconditioner();
 
     // Newton's method, then pseudo-transient relaxation, at the present
     // speed, control and delta or load; on failure the state is restored.
@@ -155,6 +186,10 @@ namespace viscoslide
     // The traction q_j, its tangent dq/dg and the gaps. [output.cc]
     void
     update_quantities();
+    // In 3D: the map of the surface about the contact as VTK image data.
+    // [output.cc]
+    void
+    write_map(const std::string &path, const std::string &what) const;
 
     const Parameters::AllParameters &prm;
     MPI_Comm                         comm;
@@ -168,21 +203,28 @@ namespace viscoslide
     SteadyStateTable                &steady_state_table;
     Progress                        *progress;
 
-    // The grid: n points x_j = (j - n/2) dx, and the solid its compliance
-    // describes: during the approach of a half-plane the block of Domain
-    // height on a rigid base, as in the finite elements (doc/
-    // boundary_element.md, Approach).
-    const double                          dx;
-    Parameters::Substrate                 substrate;
-    double                                thickness;
-    std::unique_ptr<SurfaceCompliance<2>> compliance;
-    std::vector<double>                   x, h;
+    // The grid: shape = (n_x) or (n_y, n_x) points, x_j = (j mod n_x -
+    // n_x/2) dx and in 3D y_j = (j div n_x - n_y/2) dx, each standing for
+    // the area dA = dx^(dim-1); the indenter's h and dh/dx there; and the
+    // solid its compliance describes: during the approach of a half-plane
+    // the block of Domain height on a rigid base, as in the finite
+    // elements (doc/boundary_element.md, Approach).
+    const double                            dx, dA;
+    std::array<unsigned int, dim - 1>       shape{};
+    Parameters::Substrate                   substrate;
+    double                                  thickness;
+    std::unique_ptr<SurfaceCompliance<dim>> compliance;
+    std::vector<double>                     x, y, h, slope;
 
     // The state.
     Vector<double> u;
     double         delta = 0;
-    double         V_hat = 0;
-    LoadControl    control;
+    // The mean-level correction c (0 but in 3D on a half-space), and
+    // whether displacement control holds through its spring.
+    double      level_offset      = 0.;
+    bool        mean_level_spring = false;
+    double      V_hat             = 0;
+    LoadControl control;
 
     // Newton's work: gaps, tractions (q, attraction > 0), their tangent,
     // the residual u - C q with the load equation last, the update, the
@@ -198,11 +240,16 @@ namespace viscoslide
     // per solve since it was made, factorization included (the renewal
     // that minimises that average), or did not converge. The costs are
     // counted work, not wall times [solver.cc].
+    // In 3D the multigrid of the grid, updated at every Jacobian.
     class WindowPreconditioner;
-    std::unique_ptr<WindowPreconditioner> preconditioner;
-    unsigned int                          solves_since_factorization = 0;
+    std::unique_ptr<WindowPreconditioner>  preconditioner;
+    std::unique_ptr<SurfaceMultigrid<dim>> multigrid;
+    unsigned int                           solves_since_factorization = 0;
     double work_since_factorization = 0., last_gmres_work = 0.;
     bool   last_gmres_converged = true;
+
+    // GMRES iterations and solves, for the statistics at the end.
+    unsigned long gmres_iterations = 0, gmres_solves = 0;
 
     SurfaceQuantities last_quantities{};
     unsigned int      last_newton_iterations = 0;

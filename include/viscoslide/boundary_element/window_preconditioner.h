@@ -19,16 +19,18 @@ namespace viscoslide
   // window the tangent is nearly zero, so that the rest of the system is
   // the identity plus the coupling through C, which one more application
   // of C accounts for (block elimination).
-  class BoundaryElementSolver::WindowPreconditioner
+  // (Defined for every dim, used on the line of points of dim = 2.)
+  template <int dim>
+  class BoundaryElementSolver<dim>::WindowPreconditioner
   {
   public:
-    WindowPreconditioner(const SurfaceCompliance<2> &compliance,
-                         const Vector<double>       &tangent,
-                         const double                dashpot,
-                         const unsigned int          first,
-                         const unsigned int          m,
-                         const bool                  force,
-                         const double                force_scale)
+    WindowPreconditioner(const SurfaceCompliance<dim> &compliance,
+                         const Vector<double>         &tangent,
+                         const double                  dashpot,
+                         const unsigned int            first,
+                         const unsigned int            m,
+                         const bool                    force,
+                         const double                  force_scale)
       : compliance(compliance)
       , first(first)
       , m(m)
@@ -98,10 +100,10 @@ namespace viscoslide
     }
 
   private:
-    const SurfaceCompliance<2> &compliance;
-    const unsigned int          first, m;
-    const bool                  force;
-    Vector<double>              weight, load_weight;
+    const SurfaceCompliance<dim> &compliance;
+    const unsigned int            first, m;
+    const bool                    force;
+    Vector<double>                weight, load_weight;
     // Single precision: as a preconditioner it need not be exact, and both
     // the factorization and the solves (which read the whole factor from
     // memory) take half the time.

@@ -21,6 +21,11 @@ each is written once and every script and test check imports it.
     bench         scripts/bench, bench_sliding, bench_curve,
                   bench_steady_curve: benchmark runs and their tables
     figures       scripts/figures: a figure's study run and drawn
+    convergence   scripts/convergence: mesh-refinement studies against the
+                  independent reference curves (tests/convergence.check
+                  asserts them)
+    test_table    scripts/test_table: doc/test_results.md from the tests'
+                  own summaries
 
 Every module that is a command runs as `python3 -m viscoslide.NAME ...`
 with the command line of its script in scripts/, which is a wrapper of a

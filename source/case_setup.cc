@@ -34,9 +34,12 @@ namespace viscoslide
                        const double         E_star,
                        const AllParameters &p)
       {
+        // Plane strain: F = pi E* a^2/(4R); the sphere: F = 4 E* a^3/(3R).
         const Scales s(p);
-        return std::sqrt(4. * std::max(F_hat, 0.) * s.force * s.R /
-                         (M_PI * E_star));
+        const double F = std::max(F_hat, 0.) * s.force;
+        return p.geometry.dimension == 3
+                 ? std::cbrt(3. * F * s.R / (4. * E_star))
+                 : std::sqrt(4. * F * s.R / (M_PI * E_star));
       }
     } // namespace
 
@@ -48,8 +51,11 @@ namespace viscoslide
     void
     fit_block_to_wake(AllParameters &p)
     {
-      // A uniform surface would grow with the block.
-      if (p.sliding.solver == SlidingSolver::transient ||
+      // A uniform surface would grow with the block; the 3D boundary
+      // elements have no block (an isolated half-space, or a layer whose
+      // period follows the wake).
+      if (p.geometry.dimension == 3 ||
+          p.sliding.solver == SlidingSolver::transient ||
           p.geometry.wake_lengths == 0 || p.sliding.speeds.empty() ||
           p.mesh.uniform_surface)
         return;
@@ -141,7 +147,7 @@ namespace viscoslide
           p.geometry.substrate == Substrate::half_plane
             ? std::pow(hertz_half_width(p.loading.target_load, stiffest, p),
                        2) /
-                (2 * p.adhesion.R_over_eps)
+                (p.geometry.dimension == 3 ? 1. : 2.) / p.adhesion.R_over_eps
             : 0.;
       require(
         rim - lowest >= depth + interaction_range,
@@ -213,7 +219,11 @@ namespace viscoslide
       double fastest = 0;
       for (const double V : p.sliding.speeds)
         fastest = std::max(fastest, V);
-      const double length = p.boundary_element.period > 0
+      // The isolated half-space's window is the Domain width square; a
+      // periodic layer's period along x grows with the wake.
+      const double length = p.geometry.substrate == Substrate::half_plane
+                              ? width
+                            : p.boundary_element.period > 0
                               ? p.boundary_element.period
                               : std::max(width,
                                          p.boundary_element.wake_periods *

@@ -154,7 +154,6 @@ namespace viscoslide
                                 const Vector<double> &load_weight,
                                 const bool            force_control,
                                 const double          dA,
-                                const double          spring,
                                 const double          force_scale)
   {
     levels[0].weight = weight;
@@ -180,7 +179,7 @@ namespace viscoslide
     load_row *= dA / force_scale;
     approach_column.reinit(load_weight.size());
     v_cycle(0, load_weight, approach_column);
-    double rho = spring / force_scale;
+    double rho = 0.;
     for (unsigned int j = 0; j < load_weight.size(); ++j)
       rho += load_row[j];
     corner = rho - load_row * approach_column;

@@ -66,7 +66,8 @@ namespace viscoslide
   double
   BoundaryElementSolver<dim>::dissipation_rate() const
   {
-    return compliance->dissipation_rate(traction);
+    return isolated ? isolated->dissipation_rate(traction)
+                    : compliance->dissipation_rate(traction);
   }
 
 

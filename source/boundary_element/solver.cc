@@ -74,21 +74,23 @@ namespace viscoslide
     shape                                             = new_shape;
     const unsigned int n_x = shape[dim - 2], n_y = dim == 2 ? 1 : shape[0];
     const unsigned int n = n_x * n_y;
-    compliance           = std::make_unique<SurfaceCompliance<dim>>(
-      substrate, thickness, material, prm.material.poisson_ratio, shape, dx);
-    const double V = V_hat * scales.eps / scales.tau_ref;
-    compliance->set_speed(V);
+    compliance.reset();
+    isolated.reset();
+    if (isolated_half_space())
+      isolated =
+        std::make_unique<IsolatedCompliance>(material,
+                                             prm.material.poisson_ratio,
+                                             std::array<unsigned int, 2>{
+                                               {shape[0], shape[dim - 2]}},
+                                             dx);
+    else
+      compliance = std::make_unique<SurfaceCompliance<dim>>(
+        substrate, thickness, material, prm.material.poisson_ratio, shape, dx);
+    // The preconditioner's operator is periodic on the window in any case.
     if constexpr (dim == 3)
-      {
-        multigrid =
-          std::make_unique<SurfaceMultigrid<dim>>(substrate,
-                                                  thickness,
-                                                  material,
-                                                  prm.material.poisson_ratio,
-                                                  shape,
-                                                  dx);
-        multigrid->set_speed(V);
-      }
+      multigrid = std::make_unique<SurfaceMultigrid<dim>>(
+        substrate, thickness, material, prm.material.poisson_ratio, shape, dx);
+    set_compliance_speed(V_hat * scales.eps / scales.tau_ref);
     x.resize(n);
     y.resize(n);
     h.resize(n);
@@ -118,14 +120,12 @@ namespace viscoslide
             u[j]           = old_u[o_y * old_x + o_x];
           }
       }
-    level_offset = dim == 3 && substrate == Parameters::Substrate::half_plane
-                     ? mean_level_offset()
-                     : 0.;
     preconditioner.reset();
     pcout << "Boundary-element grid: " << n << " points";
     if (dim == 3)
       pcout << " (" << n_x << " x " << n_y << ")";
-    pcout << ", spacing " << dx << " eps, period " << n_x * dx;
+    pcout << ", spacing " << dx << " eps, "
+          << (isolated ? "window " : "period ") << n_x * dx;
     if (dim == 3)
       pcout << " x " << n_y * dx;
     pcout << " eps";
@@ -139,9 +139,12 @@ namespace viscoslide
   void
   BoundaryElementSolver<dim>::fit_period(const double V)
   {
+    // The isolated half-space of 3D needs no period: its window is the
+    // Domain width wide in both directions at every speed.
     const double wake = V * longest_creep_time(prm) * scales.eps;
     const double period =
-      prm.boundary_element.period > 0
+      isolated_half_space() ? prm.geometry.domain_width * scales.eps
+      : prm.boundary_element.period > 0
         ? prm.boundary_element.period * scales.eps
         : std::max(prm.geometry.domain_width * scales.eps,
                    prm.boundary_element.wake_periods * wake);
@@ -160,73 +163,10 @@ namespace viscoslide
 
 
   template <int dim>
-  double
-  BoundaryElementSolver<dim>::mean_level_offset() const
-  {
-    // The relaxed periodic response to a unit force at the origin against
-    // Boussinesq's 1/(pi E0* r) of an isolated one, at 12 to 20 points
-    // from it along both axes: far enough for the grid's own error, near
-    // enough for the images' curvature (of order (r/period)^2) to vanish.
-    SurfaceCompliance<dim> relaxed(Parameters::Substrate::half_plane,
-                                   0.,
-                                   material,
-                                   prm.material.poisson_ratio,
-                                   shape,
-                                   dx);
-    const Vector<double>   response = relaxed.impulse_response();
-    const unsigned int     n_x      = shape[dim - 2];
-    double                 sum      = 0;
-    unsigned int           count    = 0;
-    for (unsigned int k = 12; k <= 20; ++k)
-      for (const unsigned int j : {k, n_x - k, k * n_x, (shape[0] - k) * n_x})
-        {
-          sum += 1. / (M_PI * scales.E0_star * k * dx) - response[j] / dA;
-          ++count;
-        }
-    return sum / count;
-  }
-
-
-  template <int dim>
   bool
-  BoundaryElementSolver<dim>::displacement_controlled() const
+  BoundaryElementSolver<dim>::isolated_half_space() const
   {
-    return !control.force_controlled || mean_level_spring;
-  }
-
-
-  template <int dim>
-  double &
-  BoundaryElementSolver<dim>::controlled_approach()
-  {
-    return mean_level_spring ? control.spring_delta : delta;
-  }
-
-
-  template <int dim>
-  void
-  BoundaryElementSolver<dim>::hold_force(const double force)
-  {
-    mean_level_spring = false;
-    control.hold_force(force);
-  }
-
-
-  template <int dim>
-  void
-  BoundaryElementSolver<dim>::hold_approach(const double approach)
-  {
-    // The periodic half-space's surface level is its mean over the
-    // period, not the far field: delta = delta_grid + c F_n, which is
-    // force control with a spring of stiffness 1/c.
-    mean_level_spring = level_offset > 0;
-    if (mean_level_spring)
-      control.hold_force(0., 1. / level_offset, approach);
-    else
-      {
-        control.hold_approach();
-        delta = approach;
-      }
+    return dim == 3 && substrate == Parameters::Substrate::half_plane;
   }
 
 
@@ -234,9 +174,24 @@ namespace viscoslide
   void
   BoundaryElementSolver<dim>::set_compliance_speed(const double V)
   {
-    compliance->set_speed(V);
+    if (compliance)
+      compliance->set_speed(V);
+    if (isolated)
+      isolated->set_speed(V);
     if (multigrid)
       multigrid->set_speed(V);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::apply_compliance(const Vector<double> &q,
+                                               Vector<double>       &u) const
+  {
+    if (isolated)
+      isolated->apply(q, u);
+    else
+      compliance->apply(q, u);
   }
 
 
@@ -289,7 +244,7 @@ namespace viscoslide
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
         Fn -= traction[j] * dA;
       }
-    compliance->apply(w, Cw);
+    apply_compliance(w, Cw);
     residual.reinit(n + 1);
     for (unsigned int j = 0; j < n; ++j)
       residual[j] = u[j] - Cw[j];
@@ -311,12 +266,8 @@ namespace viscoslide
         TimerOutput::Scope t(timer, "boundary element: multigrid");
         Vector<double>     weight(tangent);
         weight.add(dashpot);
-        multigrid->update(weight,
-                          tangent,
-                          control.force_controlled,
-                          dA,
-                          control.spring_stiffness,
-                          scales.sigma_max);
+        multigrid->update(
+          weight, tangent, control.force_controlled, dA, scales.sigma_max);
       }
     else
       {
@@ -412,9 +363,7 @@ namespace viscoslide
             w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
             load += s.tangent[j] * (du + dd) * s.dA;
           }
-        load += s.control.spring_stiffness *
-                (s.control.force_controlled ? src[n] : 0.);
-        s.compliance->apply(w, Cw);
+        s.apply_compliance(w, Cw);
         for (unsigned int j = 0; j < n; ++j)
           dst[j] = src[j] + Cw[j];
         dst[n] =
@@ -643,8 +592,7 @@ namespace viscoslide
     const double                 target,
     const std::function<void()> &on_converged)
   {
-    double &parameter =
-      displacement_controlled() ? controlled_approach() : control.target_force;
+    double &parameter = control.force_controlled ? control.target_force : delta;
     const double distance = std::abs(target - parameter);
     return follow(
       parameter,
@@ -685,11 +633,11 @@ namespace viscoslide
                                             const std::function<bool()> &done)
   {
     if (!follow(
-          controlled_approach(),
+          delta,
           to * scales.eps,
           prm.loading.increment * scales.eps,
           prm.loading.minimum_increment * scales.eps,
-          [this](const double d) { controlled_approach() = d; },
+          [this](const double d) { delta = d; },
           report,
           done))
       throw std::runtime_error(
@@ -716,7 +664,7 @@ namespace viscoslide
         CsvTable::format(prm.loading.final_approach) + " (F_n_hat there: " +
         CsvTable::format(last_quantities.normal_force / scales.force) +
         "); raise the Final approach");
-    hold_force(F);
+    control.hold_force(F);
     preconditioner.reset();
     if (solve() < 0)
       throw std::runtime_error("the boundary-element solver could not "
@@ -732,13 +680,14 @@ namespace viscoslide
   BoundaryElementSolver<dim>::approach_phase()
   {
     TimerOutput::Scope t(timer, "boundary element: approach");
-    // In 2D on the block of Domain height; in 3D on the substrate itself,
-    // whose delta the mean-level correction measures from afar.
+    // In 2D on the block of Domain height; in 3D on the substrate itself
+    // (the isolated half-space's delta is measured from the far field).
     substrate =
       dim == 3 ? prm.geometry.substrate : Parameters::Substrate::layer;
     thickness = prm.geometry.height() * scales.eps;
     fit_period(0.);
-    hold_approach(prm.loading.initial_approach * scales.eps);
+    control.hold_approach();
+    delta = prm.loading.initial_approach * scales.eps;
     if (solve() < 0)
       throw std::runtime_error(
         "the boundary-element solver found no equilibrium at the initial "
@@ -792,7 +741,7 @@ namespace viscoslide
       hold_target_load(done, add_row);
     if (prm.loading.retract)
       {
-        hold_approach(approach());
+        control.hold_approach();
         retract(add_row);
       }
   }
@@ -804,9 +753,9 @@ namespace viscoslide
   {
     approach_phase();
     if (prm.sliding.control == Parameters::Control::force)
-      hold_force(last_quantities.normal_force);
+      control.hold_force(last_quantities.normal_force);
     else
-      hold_approach(approach());
+      control.hold_approach();
     if (dim == 2 && prm.geometry.substrate == Parameters::Substrate::half_plane)
       {
         // From the block of the approach to the half-plane, at the load

@@ -50,14 +50,12 @@ namespace viscoslide
 
     // The Jacobian's diagonal W (weight) and, under force control, the
     // load row's weights (the traction law's tangent) and scale: the row
-    // is sum_j tangent_j (du_j + d delta) dA / force_scale + spring
-    // d delta / force_scale.
+    // is sum_j tangent_j (du_j + d delta) dA / force_scale.
     void
     update(const Vector<double> &weight,
            const Vector<double> &load_weight,
            bool                  force,
            double                dA,
-           double                spring,
            double                force_scale);
 
     // dst ~ J^-1 src, both of the grid's size plus one (the approach).

@@ -28,6 +28,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/isolated_compliance.h>
 #include <viscoslide/boundary_element/multigrid_preconditioner.h>
 #include <viscoslide/case.h>
 #include <viscoslide/indenter.h>
@@ -74,12 +75,10 @@ namespace viscoslide
     {
       return V_hat;
     }
-    // The approach measured from the far field: in 3D on a half-space the
-    // grid's delta plus the mean-level correction.
     double
     approach() const override
     {
-      return delta + level_offset * last_quantities.normal_force;
+      return delta;
     }
     const SurfaceQuantities &
     quantities() const override
@@ -120,22 +119,12 @@ namespace viscoslide
     fit_period(double V_hat);
     void
     make_grid(const std::array<unsigned int, dim - 1> &shape);
-    // The periodic half-space's mean level lies above the far field of an
-    // isolated contact by c F_n; c from the relaxed impulse response
-    // against Boussinesq's solution. [solver.cc]
-    double
-    mean_level_offset() const;
-    // Displacement control: delta given, or in 3D on a half-space the
-    // approach from afar given through the spring of the mean level; the
-    // parameter displacement control steps. [solver.cc]
-    void
-    hold_approach(double approach);
-    void
-    hold_force(double force);
+    // In 3D a half-space is the isolated contact's (isolated_compliance.h),
+    // a layer periodic. [solver.cc]
     bool
-    displacement_controlled() const;
-    double &
-    controlled_approach();
+    isolated_half_space() const;
+    void
+    apply_compliance(const Vector<double> &q, Vector<double> &u) const;
     // The compliance (and the multigrid's) at sliding speed V. [solver.cc]
     void
     set_compliance_speed(double V);
@@ -214,17 +203,14 @@ namespace viscoslide
     Parameters::Substrate                   substrate;
     double                                  thickness;
     std::unique_ptr<SurfaceCompliance<dim>> compliance;
+    std::unique_ptr<IsolatedCompliance>     isolated;
     std::vector<double>                     x, y, h, slope;
 
     // The state.
     Vector<double> u;
     double         delta = 0;
-    // The mean-level correction c (0 but in 3D on a half-space), and
-    // whether displacement control holds through its spring.
-    double      level_offset      = 0.;
-    bool        mean_level_spring = false;
-    double      V_hat             = 0;
-    LoadControl control;
+    double         V_hat = 0;
+    LoadControl    control;
 
     // Newton's work: gaps, tractions (q, attraction > 0), their tangent,
     // the residual u - C q with the load equation last, the update, the

@@ -1,0 +1,107 @@
+// The viscoelastic surface compliance of an isolated contact on a
+// half-space, for the boundary elements in 3D: the window of n_y x n_x
+// points of spacing dx about the contact is all of the surface that
+// carries traction, and the solid around it is infinite (no periodic
+// images, the far field at rest), as in the experiments.
+//
+// The creep of the Prony series is a sum of retardations: with s = i w,
+//     1/E*(s) = 1/Einf* + sum_r c_r/(1 + s theta_r),
+// its retardation times theta_r and weights c_r found from the arms'
+// moduli (one for each arm, the roots of E*(s) between the arms' poles).
+// A material point under the contact at x was at x + V t a time t ago
+// (sliding towards +x), so that the surface displacement is the elastic
+// response to an effective pressure,
+//     u = G * q_eff,  q_eff(x) = q(x)/Einf* + sum_r c_r int_0^inf
+//                                  exp(-xi/L_r) q(x + xi) dxi/L_r,
+// L_r = V theta_r: the traction q smeared downstream over each
+// retardation length. G is Love's influence of a uniform unit traction on
+// a square cell on the elastic half-space of unit modulus (Johnson,
+// Contact Mechanics, eq. 3.25), applied as a linear (not circular)
+// convolution by FFTs on a grid of twice the window in each direction
+// (zero padding). The smearing is exact for tractions constant on each
+// cell and runs along each row of the window; what it carries beyond the
+// window's trailing edge is dropped (the wake's effect on the contact
+// from beyond the window, small when the window is a few contact
+// diameters long).
+#ifndef viscoslide_boundary_element_isolated_compliance_h
+#define viscoslide_boundary_element_isolated_compliance_h
+
+#include <deal.II/lac/vector.h>
+
+#include <viscoslide/material.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  class IsolatedCompliance
+  {
+  public:
+    // n = (n_y, n_x) points of spacing dx (internal units, E0* = 1).
+    IsolatedCompliance(const ViscoelasticSolid           &material,
+                       double                             nu,
+                       const std::array<unsigned int, 2> &n,
+                       double                             dx);
+    ~IsolatedCompliance();
+    IsolatedCompliance(const IsolatedCompliance &) = delete;
+    IsolatedCompliance &
+    operator=(const IsolatedCompliance &) = delete;
+
+    // The sliding speed V (internal units); 0 is the relaxed solid.
+    void
+    set_speed(double V);
+
+    double
+    speed() const
+    {
+      return V;
+    }
+
+    // u = C q on the window.
+    void
+    apply(const Vector<double> &q, Vector<double> &u) const;
+
+    // The rate of work of the traction q on the solid, -V times the
+    // integral of q du/dx over the window (u = C q; du/dx by central
+    // differences): the conservative (instantaneous and relaxed) parts of
+    // C do no work in a steady state, so that this is the dissipation.
+    double
+    dissipation_rate(const Vector<double> &q) const;
+
+    // The retardation times theta_r (in the time unit of the material)
+    // and weights c_r of the creep, for the documentation and the tests.
+    const std::vector<std::pair<double, double>> &
+    retardations() const
+    {
+      return retardation;
+    }
+
+    unsigned int
+    size() const
+    {
+      return n[0] * n[1];
+    }
+
+  private:
+    // q_eff of q on the window.
+    void
+    effective_traction(const Vector<double> &q,
+                       std::vector<double>  &q_eff) const;
+
+    const std::array<unsigned int, 2>      n;
+    const double                           dx;
+    double                                 V = 0;
+    double                                 inverse_glassy; // 1/Einf*
+    std::vector<std::pair<double, double>> retardation;    // (theta_r, c_r)
+    // FFTW's plans, buffers and the transformed kernel, kept out of this
+    // header.
+    struct Convolution;
+    std::unique_ptr<Convolution> convolution;
+  };
+} // namespace viscoslide
+
+#endif

@@ -11,6 +11,7 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
                                                curve()
     scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
                                                steady_curve()
+    scripts/bench_sphere [R_hat]               sphere_curve()
 
 Each runs in the checkout (paths are relative to it, as the scripts'
 `cd` made them), builds it first with scripts/setup if there is no
@@ -229,7 +230,37 @@ def compare_columns(path, reference):
         print(f"  {c:10s} largest relative change {d[i]:.2e} (row {i}, V_hat {now[i]['V_hat']})")
 
 
-COMMANDS = {'approach': approach, 'sliding': sliding, 'curve': curve, 'steady_curve': steady_curve}
+def sphere_curve(argv):
+    """The sphere's friction curve (parameter_files/sphere_friction.prm:
+    muT 3, F_hat 1, 21 speeds from 0.01 to 1000, approach included) by the
+    3D boundary elements on one process, at R_hat (default 100) with the
+    window and the grid spacing scaled as the contact, sqrt(R_hat): the
+    wall time, the grid, GMRES iterations per Newton step, the rows."""
+    prepare()
+    R_hat = float(argv[0]) if argv else 100.
+    scale = math.sqrt(R_hat / 100.)
+    work = tempfile.mkdtemp()
+    changes = {'Output/Output directory': f'{work}/out', 'Adhesion/R over eps': R_hat,
+               'Geometry/Domain width': 160 * scale, 'Mesh/Finest surface cell': scale}
+    path = prm.override_file('parameter_files/sphere_friction.prm',
+                             os.path.join(work, 'run.prm'), changes)
+    log = os.path.join(work, 'log')
+    code, wall = timed_run([VISCOSLIDE, path], log)
+    text = open(log).read()
+    if code:
+        print('\n'.join(text.splitlines()[-20:]))
+        sys.exit(1)
+    for line in text.splitlines():
+        if line.startswith(('Boundary-element grid', 'GMRES:')):
+            print(line)
+    table = rows(f'{work}/out/steady_state.csv')
+    print(f"R_hat {R_hat:g}: {len(table)} speeds, {sum(r['steady'] == '1' for r in table)} steady, "
+          f"wall {wall:.1f} s (approach included)")
+    print(f'output in {work}/out')
+
+
+COMMANDS = {'approach': approach, 'sliding': sliding, 'curve': curve, 'steady_curve': steady_curve,
+            'sphere_curve': sphere_curve}
 
 
 def main(argv=None):

@@ -34,7 +34,7 @@ a decade; the V_hat axis is logarithmic.
                    changes sign along a curve (mu unbounded there), a
                    dotted vertical line in the curve's colour at the V_hat
                    interpolated linearly in log V_hat.
-  PREFIX_L         L_hat = L/R against V_hat.
+  PREFIX_L         L_hat = L/R against V_hat (PREFIX_A: A_hat = A/(pi R eps), a sphere).
   PREFIX_forces    two panels sharing the V_hat axis: F_t_hat above (with
                    --contact-set also F_t_contact_set_hat, dash-dot),
                    F_n_hat below with its zero line and the sign changes
@@ -405,16 +405,22 @@ def plot_mu(curves, caption, prefix, contact_set):
     save(fig, prefix, 'mu')
 
 
-def plot_L(curves, caption, prefix):
-    q = [('L_hat', '-', 'o', 'o', r'$\hat L$')]
+# The contact's measure: its length in 2D, its area in 3D (a sphere).
+CONTACT = {'L_hat': (r'$\hat L$', r'$\hat L = L/R$', 'L'),
+           'A_hat': (r'$\hat A$', r'$\hat A = A/(\pi R \epsilon)$', 'A')}
+
+
+def plot_L(curves, caption, prefix, column='L_hat'):
+    short, axis_label, name = CONTACT[column]
+    q = [(column, '-', 'o', 'o', short)]
     fig, ax = new_figure(caption)
     draw(ax, curves, q)
     v_axis(ax, curves)
-    log_if_decades(ax, [y for c in curves for y in c.xy('L_hat')[1]])
+    log_if_decades(ax, [y for c in curves for y in c.xy(column)[1]])
     ax.set_xlabel(V_LABEL)
-    ax.set_ylabel(r'$\hat L = L/R$')
+    ax.set_ylabel(axis_label)
     legend(ax, curves, [], extras(curves, mark_crossings=False))
-    save(fig, prefix, 'L')
+    save(fig, prefix, name)
 
 
 def plot_forces(curves, caption, prefix, contact_set):
@@ -642,8 +648,9 @@ def main():
         return
     caption = describe(curves, a.label)
     plot_mu(curves, caption, prefix, a.contact_set)
-    if any(c.has('L_hat') for c in curves):
-        plot_L(curves, caption, prefix)
+    for column in CONTACT:
+        if any(c.has(column) for c in curves):
+            plot_L(curves, caption, prefix, column)
     plot_forces(curves, caption, prefix, a.contact_set)
     if a.maxima:
         plot_maxima(curves, curves, prefix, a.maxima)

@@ -230,6 +230,8 @@ def describe(curves, label_column):
         elif key != 'time_constant' or curves[0].params[key][0] != 'relaxation':
             fixed.append(texts[0])
     caption = ', '.join(fixed)
+    if any(c.has('A_hat') for c in curves):  # a sphere (3D)
+        caption = 'sphere, ' + caption.replace('half-plane', 'half-space')
     if label_column:
         for c in curves:
             v = c.rows[0].get(label_column, '')

@@ -1,0 +1,69 @@
+"""scripts/plot_map: the contact footprint of a sphere seen from above,
+from the .vti maps the 3D boundary elements write beside each profile
+(doc/sphere.md): the pressure p_hat = p/sigma_max in colour (compression
+positive, the adhesive tension negative), the contact's edge (the gap at
+1.2 eps) as a black line, x along the sliding direction (towards +x).
+
+    scripts/plot_map OUT.png MAP.vti [MAP.vti ...]
+
+Several maps go side by side with one colour scale, each titled with the
+V_hat of its header."""
+import re
+import sys
+
+
+def read_vti(path):
+    """(x, y, fields, header) of an ASCII VTK image file as viscoslide
+    writes it: x and y the point coordinates (in R), fields name -> 2D
+    array (rows along y)."""
+    import numpy as np
+    text = open(path).read()
+    extent = [int(v) for v in re.search(r'WholeExtent="([^"]*)"', text).group(1).split()]
+    origin = [float(v) for v in re.search(r'Origin="([^"]*)"', text).group(1).split()]
+    spacing = [float(v) for v in re.search(r'Spacing="([^"]*)"', text).group(1).split()]
+    nx, ny = extent[1] + 1, extent[3] + 1
+    fields = {}
+    for name, data in re.findall(r'Name="([^"]+)"[^>]*>\s*([^<]*)</DataArray>', text):
+        fields[name] = np.array(data.split(), dtype=float).reshape(ny, nx)
+    x = origin[0] + spacing[0] * np.arange(nx)
+    y = origin[1] + spacing[1] * np.arange(ny)
+    header = re.search(r'<!--(.*?)-->', text)
+    return x, y, fields, header.group(1).strip() if header else ''
+
+
+def main(argv):
+    if len(argv) < 2:
+        sys.exit(__doc__)
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import TwoSlopeNorm
+    out, paths = argv[0], argv[1:]
+    maps = [read_vti(p) for p in paths]
+    low = min(m[2]['p_hat'].min() for m in maps)
+    high = max(m[2]['p_hat'].max() for m in maps)
+    norm = TwoSlopeNorm(vmin=min(low, -1e-3), vcenter=0., vmax=max(high, 1e-3))
+    reach = max(max(abs(m[0]).max(), abs(m[1]).max()) for m in maps)
+    fig, axes = plt.subplots(1, len(maps), figsize=(4.2 * len(maps), 4.4), squeeze=False)
+    for ax, (x, y, f, header) in zip(axes[0], maps):
+        image = ax.pcolormesh(x, y, f['p_hat'], cmap='RdBu_r', norm=norm, shading='auto')
+        ax.contour(x, y, f['gap_over_eps'], levels=[1.2], colors='k', linewidths=1.0)
+        V = re.search(r'V_hat = (\S+?),', header)
+        v = float(V.group(1)) if V else float('nan')
+        ax.set_title(r'$\hat V = %s$' % (f'{v:.3g}' if v < 1e3 else f'{v:.0f}'))
+        # beyond a smaller map the surface is free: zero pressure's colour
+        ax.set_facecolor(plt.get_cmap('RdBu_r')(norm(0.)))
+        ax.set_xlim(-reach, reach)
+        ax.set_ylim(-reach, reach)
+        ax.set_aspect('equal')
+        ax.set_xlabel(r'$x/R$ (sliding towards $+x$)')
+        ax.set_ylabel(r'$y/R$')
+    fig.colorbar(image, ax=list(axes[0]), label=r'$p/\sigma_{max}$ (compression $> 0$)',
+                 shrink=0.85)
+    fig.suptitle('contact footprint; black: gap = 1.2 eps')
+    fig.savefig(out, dpi=130, bbox_inches='tight')
+    print(out)
+
+
+if __name__ == '__main__':
+    main(sys.argv[1:])

@@ -21,6 +21,8 @@ each is written once and every script and test check imports it.
     bench         scripts/bench, bench_sliding, bench_curve,
                   bench_steady_curve: benchmark runs and their tables
     figures       scripts/figures: a figure's study run and drawn
+    plot_map      scripts/plot_map: a sphere's contact footprint from the
+                  .vti maps of the 3D boundary elements
     convergence   scripts/convergence: mesh-refinement studies against the
                   independent reference curves (tests/convergence.check
                   asserts them)

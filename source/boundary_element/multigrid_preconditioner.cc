@@ -70,6 +70,7 @@ namespace viscoslide
   {
     std::array<unsigned int, dim - 1> s = shape;
     double                            h = dx;
+    window                              = shape[dim - 2] * dx;
     for (;;)
       {
         Level level;
@@ -97,8 +98,18 @@ namespace viscoslide
   void
   SurfaceMultigrid<dim>::set_speed(const double V)
   {
+    // Not the viscoelastic operator itself: at speeds near the peak its
+    // symbol is far from symmetric, which damped Jacobi smoothing does not
+    // reduce (about 120 GMRES iterations per Newton step at V_hat 10), but
+    // the relaxed elastic one scaled by |E*| at the frequency with which
+    // the material crosses a quarter of the window, about the contact's
+    // size (19 iterations there; the same at rest). The viscous part is
+    // smooth and left to GMRES.
     for (Level &level : levels)
-      level.compliance->set_speed(V);
+      level.compliance->set_speed(0.);
+    const auto  &top   = *levels[0].compliance;
+    const double omega = 2 * M_PI * V / (0.25 * window);
+    scale              = std::abs(top.modulus(omega));
   }
 
 
@@ -164,7 +175,7 @@ namespace viscoslide
         // Jacobi's diagonal; where the law's tangent is negative (the
         // attractive tail) no smaller than half of K's, so that the
         // smoother stays bounded.
-        const double kappa = level.compliance->stiffness_diagonal();
+        const double kappa = scale * level.compliance->stiffness_diagonal();
         level.inverse_diagonal.reinit(level.weight.size());
         for (unsigned int j = 0; j < level.weight.size(); ++j)
           level.inverse_diagonal[j] =
@@ -203,7 +214,7 @@ namespace viscoslide
         unit[j] = 1.;
         level.compliance->apply_stiffness(unit, column);
         for (unsigned int i = 0; i < n; ++i)
-          coarsest(i, j) = column[i];
+          coarsest(i, j) = scale * column[i];
         coarsest(j, j) += level.weight[j];
       }
     coarsest.compute_lu_factorization();
@@ -218,7 +229,7 @@ namespace viscoslide
   {
     level.compliance->apply_stiffness(x, y);
     for (unsigned int j = 0; j < x.size(); ++j)
-      y[j] += level.weight[j] * x[j];
+      y[j] = scale * y[j] + level.weight[j] * x[j];
   }
 
 
@@ -282,6 +293,7 @@ namespace viscoslide
     std::copy(src.begin(), src.begin() + n, s.begin());
     // (K + W)^-1 K s ~ (I + C W)^-1 s
     levels[0].compliance->apply_stiffness(s, Ks);
+    Ks *= scale;
     v_cycle(0, Ks, z);
     double d = src[n];
     if (force && corner != 0.)

@@ -8,13 +8,17 @@
 // the stiffness C^-1, J = C (K + W), so J^-1 = (K + W)^-1 K. K is a
 // pseudo-differential operator of order one (its symbol E* |k| / 2), W a
 // local reaction that is huge inside the contact and nil outside it: the
-// sum is what geometric multigrid does well. One V-cycle (damped Jacobi
-// smoothing, averaging restriction, constant prolongation, the same K
-// rediscretised on each coarser grid with W averaged onto it, a dense
-// solve on the coarsest) approximates (K + W)^-1; the number of GMRES
-// iterations then stays bounded as the grid is refined. Under force
-// control the load row is eliminated with the preconditioner's own
-// solution for the approach column (block elimination).
+// sum is what geometric multigrid does well. For K the preconditioner
+// takes the relaxed elastic operator of the periodic window, scaled by
+// |E*| at the frequency of the contact (set_speed), not the viscoelastic
+// one, whose strongly non-symmetric symbol near the friction peak the
+// smoother cannot reduce. One V-cycle (damped Jacobi smoothing, full
+// weighting, linear interpolation, K rediscretised on each coarser grid
+// with W restricted onto it, a dense solve on the coarsest) approximates
+// (K + W)^-1; GMRES is left the viscous part, which is smooth, and its
+// iterations stay bounded as the grid is refined. Under force control the
+// load row is eliminated with the preconditioner's own solution for the
+// approach column (block elimination).
 #ifndef viscoslide_boundary_element_multigrid_preconditioner_h
 #define viscoslide_boundary_element_multigrid_preconditioner_h
 
@@ -100,6 +104,9 @@ namespace viscoslide
     factorize_coarsest();
 
     std::vector<Level> levels;
+    // The modulus scaling the relaxed elastic operator (set_speed), and
+    // the window's length along x.
+    double scale = 1., window = 0.;
     // The coarsest operator, factorized; empty where too large, then
     // smoothing alone stands in for it.
     LAPACKFullMatrix<double> coarsest;

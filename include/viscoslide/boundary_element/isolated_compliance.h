@@ -20,9 +20,10 @@
 // convolution by FFTs on a grid of twice the window in each direction
 // (zero padding). The smearing is exact for tractions constant on each
 // cell and runs along each row of the window; what it carries beyond the
-// window's trailing edge is dropped (the wake's effect on the contact
-// from beyond the window, small when the window is a few contact
-// diameters long).
+// window's trailing edge is dropped: nothing at rest, but when the creep
+// acts over lengths beyond the window (V_hat 100: V tau_c = 1000 eps) its
+// effect on the contact falls only as the inverse of the window
+// (doc/sphere.md, Convergence).
 #ifndef viscoslide_boundary_element_isolated_compliance_h
 #define viscoslide_boundary_element_isolated_compliance_h
 

@@ -66,8 +66,7 @@ namespace viscoslide
   double
   BoundaryElementSolver<dim>::dissipation_rate() const
   {
-    return isolated ? isolated->dissipation_rate(traction)
-                    : compliance->dissipation_rate(traction);
+    return compliance->dissipation_rate(traction);
   }
 
 

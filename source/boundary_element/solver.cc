@@ -74,10 +74,8 @@ namespace viscoslide
     shape                                             = new_shape;
     const unsigned int n_x = shape[dim - 2], n_y = dim == 2 ? 1 : shape[0];
     const unsigned int n = n_x * n_y;
-    compliance.reset();
-    isolated.reset();
     if (isolated_half_space())
-      isolated =
+      compliance =
         std::make_unique<IsolatedCompliance>(material,
                                              prm.material.poisson_ratio,
                                              std::array<unsigned int, 2>{
@@ -125,7 +123,7 @@ namespace viscoslide
     if (dim == 3)
       pcout << " (" << n_x << " x " << n_y << ")";
     pcout << ", spacing " << dx << " eps, "
-          << (isolated ? "window " : "period ") << n_x * dx;
+          << (isolated_half_space() ? "window " : "period ") << n_x * dx;
     if (dim == 3)
       pcout << " x " << n_y * dx;
     pcout << " eps";
@@ -174,24 +172,9 @@ namespace viscoslide
   void
   BoundaryElementSolver<dim>::set_compliance_speed(const double V)
   {
-    if (compliance)
-      compliance->set_speed(V);
-    if (isolated)
-      isolated->set_speed(V);
+    compliance->set_speed(V);
     if (multigrid)
       multigrid->set_speed(V);
-  }
-
-
-  template <int dim>
-  void
-  BoundaryElementSolver<dim>::apply_compliance(const Vector<double> &q,
-                                               Vector<double>       &u) const
-  {
-    if (isolated)
-      isolated->apply(q, u);
-    else
-      compliance->apply(q, u);
   }
 
 
@@ -244,7 +227,7 @@ namespace viscoslide
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
         Fn -= traction[j] * dA;
       }
-    apply_compliance(w, Cw);
+    compliance->apply(w, Cw);
     residual.reinit(n + 1);
     for (unsigned int j = 0; j < n; ++j)
       residual[j] = u[j] - Cw[j];
@@ -298,14 +281,14 @@ namespace viscoslide
                                     no_contact ? 0 : last + 1 - first))
           {
             TimerOutput::Scope t(timer, "boundary element: factorization");
-            preconditioner =
-              std::make_unique<WindowPreconditioner>(*compliance,
-                                                     tangent,
-                                                     dashpot,
-                                                     begin,
-                                                     m,
-                                                     control.force_controlled,
-                                                     scales.sigma_max / dx);
+            preconditioner = std::make_unique<WindowPreconditioner>(
+              static_cast<const SurfaceCompliance<dim> &>(*compliance),
+              tangent,
+              dashpot,
+              begin,
+              m,
+              control.force_controlled,
+              scales.sigma_max / dx);
             work_since_factorization   = factorization_work(m);
             solves_since_factorization = 1;
             last_gmres_work            = 0.;
@@ -363,7 +346,7 @@ namespace viscoslide
             w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
             load += s.tangent[j] * (du + dd) * s.dA;
           }
-        s.apply_compliance(w, Cw);
+        s.compliance->apply(w, Cw);
         for (unsigned int j = 0; j < n; ++j)
           dst[j] = src[j] + Cw[j];
         dst[n] =

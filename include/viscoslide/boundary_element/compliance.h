@@ -33,8 +33,30 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  // What the boundary-element solver needs of a surface compliance: the
+  // periodic one below, or an isolated contact's (isolated_compliance.h).
+  class Compliance
+  {
+  public:
+    virtual ~Compliance() = default;
+
+    // The sliding speed V (internal units); 0 is the relaxed solid.
+    virtual void
+    set_speed(double V) = 0;
+
+    // u = C q on the grid.
+    virtual void
+    apply(const Vector<double> &q, Vector<double> &u) const = 0;
+
+    // The rate of work the traction q does on the solid in a steady
+    // state: its dissipation.
+    virtual double
+    dissipation_rate(const Vector<double> &q) const = 0;
+  };
+
+
   template <int dim>
-  class SurfaceCompliance
+  class SurfaceCompliance : public Compliance
   {
   public:
     // n points per direction (n_x, and n_y in 3D) of spacing dx (internal
@@ -51,9 +73,8 @@ namespace viscoslide
     SurfaceCompliance &
     operator=(const SurfaceCompliance &) = delete;
 
-    // The sliding speed V (internal units); 0 is the relaxed solid.
     void
-    set_speed(double V);
+    set_speed(double V) override;
 
     double
     speed() const
@@ -61,9 +82,8 @@ namespace viscoslide
       return V;
     }
 
-    // u = C q on the grid.
     void
-    apply(const Vector<double> &q, Vector<double> &u) const;
+    apply(const Vector<double> &q, Vector<double> &u) const override;
 
     // q = K u with K the inverse of C, the surface stiffness; for the
     // half-space's k = 0 mode (no compliance) the stiffness of the
@@ -86,7 +106,7 @@ namespace viscoslide
     // of -q du/dx over the period, from the loss part of C alone: in a
     // steady state all of it is dissipated.
     double
-    dissipation_rate(const Vector<double> &q) const;
+    dissipation_rate(const Vector<double> &q) const override;
 
     // Phi(s) of the bonded layer, s = |k| t: 1 for s -> infinity (the
     // half-plane), s (1 - 2 nu)/(2 (1 - nu)^2) for s -> 0 (the layer's

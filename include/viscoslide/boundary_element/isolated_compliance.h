@@ -29,6 +29,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <viscoslide/boundary_element/compliance.h>
 #include <viscoslide/material.h>
 
 #include <array>
@@ -39,7 +40,7 @@ namespace viscoslide
 {
   using namespace dealii;
 
-  class IsolatedCompliance
+  class IsolatedCompliance : public Compliance
   {
   public:
     // n = (n_y, n_x) points of spacing dx (internal units, E0* = 1).
@@ -52,9 +53,8 @@ namespace viscoslide
     IsolatedCompliance &
     operator=(const IsolatedCompliance &) = delete;
 
-    // The sliding speed V (internal units); 0 is the relaxed solid.
     void
-    set_speed(double V);
+    set_speed(double V) override;
 
     double
     speed() const
@@ -64,14 +64,14 @@ namespace viscoslide
 
     // u = C q on the window.
     void
-    apply(const Vector<double> &q, Vector<double> &u) const;
+    apply(const Vector<double> &q, Vector<double> &u) const override;
 
     // The rate of work of the traction q on the solid, -V times the
     // integral of q du/dx over the window (u = C q; du/dx by central
     // differences): the conservative (instantaneous and relaxed) parts of
     // C do no work in a steady state, so that this is the dissipation.
     double
-    dissipation_rate(const Vector<double> &q) const;
+    dissipation_rate(const Vector<double> &q) const override;
 
     // The retardation times theta_r (in the time unit of the material)
     // and weights c_r of the creep, for the documentation and the tests.

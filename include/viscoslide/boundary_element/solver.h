@@ -123,8 +123,6 @@ namespace viscoslide
     // a layer periodic. [solver.cc]
     bool
     isolated_half_space() const;
-    void
-    apply_compliance(const Vector<double> &q, Vector<double> &u) const;
     // The compliance (and the multigrid's) at sliding speed V. [solver.cc]
     void
     set_compliance_speed(double V);
@@ -198,13 +196,13 @@ namespace viscoslide
     // solid its compliance describes: during the approach of a half-plane
     // the block of Domain height on a rigid base, as in the finite
     // elements (doc/boundary_element.md, Approach).
-    const double                            dx, dA;
-    std::array<unsigned int, dim - 1>       shape{};
-    Parameters::Substrate                   substrate;
-    double                                  thickness;
-    std::unique_ptr<SurfaceCompliance<dim>> compliance;
-    std::unique_ptr<IsolatedCompliance>     isolated;
-    std::vector<double>                     x, y, h, slope;
+    const double                      dx, dA;
+    std::array<unsigned int, dim - 1> shape{};
+    Parameters::Substrate             substrate;
+    double                            thickness;
+    // periodic (SurfaceCompliance<dim>) or isolated (3D half-space)
+    std::unique_ptr<Compliance> compliance;
+    std::vector<double>         x, y, h, slope;
 
     // The state.
     Vector<double> u;

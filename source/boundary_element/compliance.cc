@@ -171,23 +171,35 @@ namespace viscoslide
 
   template <int dim>
   void
+  SurfaceCompliance<dim>::multiply(
+    const std::vector<std::complex<double>> &factors,
+    const Vector<double>                    &in,
+    Vector<double>                          &out) const
+  {
+    AssertDimension(in.size(), n_points);
+    std::copy(in.begin(), in.end(), plans->real);
+    fftw_execute(plans->forward);
+    // fftw_complex is laid out as std::complex<double> (FFTW's manual).
+    auto *spectrum = reinterpret_cast<std::complex<double> *>(plans->spectrum);
+    for (unsigned int m = 0; m < n_modes; ++m)
+      {
+        // (c + id)(a + ib) without the library's checks for infinities
+        const double a = spectrum[m].real(), b = spectrum[m].imag(),
+                     c = factors[m].real(), d = factors[m].imag();
+        spectrum[m] = {c * a - d * b, c * b + d * a};
+      }
+    fftw_execute(plans->backward);
+    out.reinit(n_points, true);
+    std::copy(plans->real, plans->real + n_points, out.begin());
+  }
+
+
+  template <int dim>
+  void
   SurfaceCompliance<dim>::apply(const Vector<double> &q,
                                 Vector<double>       &u) const
   {
-    AssertDimension(q.size(), n_points);
-    std::copy(q.begin(), q.end(), plans->real);
-    fftw_execute(plans->forward);
-    for (unsigned int m = 0; m < n_modes; ++m)
-      {
-        const std::complex<double> z(plans->spectrum[m][0],
-                                     plans->spectrum[m][1]);
-        const std::complex<double> w = symbol[m] * z;
-        plans->spectrum[m][0]        = w.real();
-        plans->spectrum[m][1]        = w.imag();
-      }
-    fftw_execute(plans->backward);
-    u.reinit(n_points, true);
-    std::copy(plans->real, plans->real + n_points, u.begin());
+    multiply(symbol, q, u);
   }
 
 
@@ -209,21 +221,7 @@ namespace viscoslide
   SurfaceCompliance<dim>::apply_stiffness(const Vector<double> &u,
                                           Vector<double>       &q) const
   {
-    AssertDimension(u.size(), n_points);
-    std::copy(u.begin(), u.end(), plans->real);
-    fftw_execute(plans->forward);
-    // fftw_complex is laid out as std::complex<double> (FFTW's manual).
-    auto *spectrum = reinterpret_cast<std::complex<double> *>(plans->spectrum);
-    for (unsigned int m = 0; m < n_modes; ++m)
-      {
-        // (a + ib)(c + id) without the library's checks for infinities
-        const double a = spectrum[m].real(), b = spectrum[m].imag(),
-                     c = stiffness[m].real(), d = stiffness[m].imag();
-        spectrum[m] = {a * c - b * d, a * d + b * c};
-      }
-    fftw_execute(plans->backward);
-    q.reinit(n_points, true);
-    std::copy(plans->real, plans->real + n_points, q.begin());
+    multiply(stiffness, u, q);
   }
 
 

@@ -119,14 +119,14 @@ namespace viscoslide
     std::complex<double>
     modulus(double omega) const;
 
-    // The number of points.
-    unsigned int
-    size() const
-    {
-      return n_points;
-    }
-
   private:
+    // out = F^-1 (factors F in) on the grid: the factors of each mode
+    // carry FFTW's normalisation (symbol, stiffness).
+    void
+    multiply(const std::vector<std::complex<double>> &factors,
+             const Vector<double>                    &in,
+             Vector<double>                          &out) const;
+
     // K(|k|) at unit modulus; at k = 0 0 for the half-space (the reference
     // of u), the limit t(1 - 2 nu)/(1 - nu)^2 for the layer.
     double

@@ -56,12 +56,6 @@ namespace viscoslide
     void
     set_speed(double V) override;
 
-    double
-    speed() const
-    {
-      return V;
-    }
-
     // u = C q on the window.
     void
     apply(const Vector<double> &q, Vector<double> &u) const override;
@@ -72,20 +66,6 @@ namespace viscoslide
     // C do no work in a steady state, so that this is the dissipation.
     double
     dissipation_rate(const Vector<double> &q) const override;
-
-    // The retardation times theta_r (in the time unit of the material)
-    // and weights c_r of the creep, for the documentation and the tests.
-    const std::vector<std::pair<double, double>> &
-    retardations() const
-    {
-      return retardation;
-    }
-
-    unsigned int
-    size() const
-    {
-      return n[0] * n[1];
-    }
 
   private:
     // q_eff of q on the window.

@@ -36,6 +36,22 @@ def run(viscoslide, prm_text, work_dir, name, nproc=1, mpiexec='mpirun'):
     return subprocess.run(cmd, cwd=work_dir, capture_output=True, text=True)
 
 
+def retraction_pull_off(rows):
+    """The pull-off under load control from the rows of a displacement-
+    controlled retraction (approach.csv, phase 'retract'): the minimum of
+    F_n_hat refined by the vertex of the parabola through it and its two
+    neighbours. None when the minimum lies at an end (not passed)."""
+    k = min(range(len(rows)), key=lambda i: rows[i]['F_n_hat'])
+    if not 0 < k < len(rows) - 1:
+        return None
+    (x0, y0), (x1, y1), (x2, y2) = [(rows[i]['delta_hat'], rows[i]['F_n_hat'])
+                                    for i in (k - 1, k, k + 1)]
+    d = (x0 - x1) * (x0 - x2) * (x1 - x2)
+    a = (x2 * (y1 - y0) + x1 * (y0 - y2) + x0 * (y2 - y1)) / d
+    b = (x2 * x2 * (y0 - y1) + x1 * x1 * (y2 - y0) + x0 * x0 * (y1 - y2)) / d
+    return (y0 - a * x0 * x0 - b * x0) - b * b / (4 * a) if a > 0 else y1
+
+
 class Checker:
     """Collects named checks; prints a numdiff-friendly summary, and at
     finish() writes every check with its detail (what was measured against

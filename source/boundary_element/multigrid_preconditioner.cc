@@ -104,9 +104,8 @@ namespace viscoslide
     // the relaxed elastic one scaled by |E*| at the frequency with which
     // the material crosses a quarter of the window, about the contact's
     // size (19 iterations there; the same at rest). The viscous part is
-    // smooth and left to GMRES.
-    for (Level &level : levels)
-      level.compliance->set_speed(0.);
+    // smooth and left to GMRES. The levels' compliances stay relaxed, as
+    // they were made.
     const auto  &top   = *levels[0].compliance;
     const double omega = 2 * M_PI * V / (0.25 * window);
     scale              = std::abs(top.modulus(omega));

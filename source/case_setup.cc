@@ -228,7 +228,8 @@ namespace viscoslide
                               : std::max(width,
                                          p.boundary_element.wake_periods *
                                            fastest * longest_creep_time(p));
-      const double points = (length / spacing) * (width / spacing);
+      const double points =
+        (length / spacing) * (p.geometry.length() / spacing);
       // GMRES keeps up to 102 vectors of the grid, the rest about 40; four
       // fifths of this machine's memory may go to them.
       const double gigabytes          = 150. * 8. * points / 1e9;
@@ -236,11 +237,12 @@ namespace viscoslide
                                         double(sysconf(_SC_PAGE_SIZE)) / 1e9;
       std::ostringstream message;
       message << "the 3D boundary-element grid of " << points << " points ("
-              << length << " x " << width << " eps at "
+              << length << " x " << p.geometry.length() << " eps at "
               << "spacing " << spacing << " eps) needs about " << gigabytes
               << " GB, this machine has " << max_grid_gigabytes / 0.8
               << " GB: raise 'Boundary element/Grid spacing' "
-                 "or lower 'Geometry/Domain width', 'Boundary element/"
+                 "or lower 'Geometry/Domain width', 'Geometry/Domain length', "
+                 "'Boundary element/"
                  "Period' or 'Boundary element/Wake periods'";
       require(gigabytes <= max_grid_gigabytes, message.str());
     }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace viscoslide
 {
@@ -123,6 +124,13 @@ namespace viscoslide
 
   namespace Parameters
   {
+    namespace
+    {
+      constexpr int default_domain_height = 10000;
+      constexpr int default_wake_lengths  = 20;
+    } // namespace
+
+
     void
     Geometry::declare(ParameterHandler &prm)
     {
@@ -154,14 +162,31 @@ namespace viscoslide
                         "W/eps, the lateral extent of the block (x from "
                         "-W/2 to W/2). Lateral sides are traction free.");
       prm.declare_entry("Domain height",
-                        "10000",
+                        std::to_string(default_domain_height),
                         Patterns::Double(),
                         "H/eps of the half-plane block. Under displacement "
                         "control the approach delta depends on it "
                         "logarithmically (plane strain).");
       prm.declare_entry(
+        "Indenter elongation",
+        "1",
+        Patterns::Double(0.),
+        "Dimension = 3 only: R_y/R, the indenter's radius of curvature "
+        "across the track (y) over the one along it (R, set by "
+        "Adhesion/R over eps). The profile is h(sqrt(x^2 + y^2/"
+        "elongation)) for the shape's h(r): an elliptic paraboloid for "
+        "'parabola'; a large elongation approaches the 2D cylinder "
+        "(doc/sphere.md).");
+      prm.declare_entry(
+        "Domain length",
+        "0",
+        Patterns::Double(0.),
+        "Dimension = 3 only: the extent (in eps) of the surface across "
+        "the track, y from -length/2 to length/2; 0 takes the Domain "
+        "width.");
+      prm.declare_entry(
         "Wake lengths",
-        "20",
+        std::to_string(default_wake_lengths),
         Patterns::Double(0.),
         "The steady-state solver needs the wake, the solid relaxing "
         "over V tau_c behind the contact (tau_c the creep time), inside "
@@ -189,10 +214,29 @@ namespace viscoslide
       domain_width    = prm.get_double("Domain width");
       domain_height   = prm.get_double("Domain height");
       wake_lengths    = prm.get_double("Wake lengths");
+      elongation      = prm.get_double("Indenter elongation");
+      domain_length   = prm.get_double("Domain length");
       prm.leave_subsection();
       require(layer_thickness > 0 && std::isfinite(layer_thickness),
               entry("Geometry", "Layer thickness", layer_thickness) +
                 " must be positive");
+      // What one dimension has and the other has not.
+      require(dimension == 3 || (elongation == 1 && domain_length == 0),
+              "'Geometry/Indenter elongation' and 'Geometry/Domain length' "
+              "are for 'Geometry/Dimension' = 3; in 2D the indenter is a "
+              "cylinder and the forces are per unit length: remove them");
+      require(dimension == 2 || (domain_height == default_domain_height &&
+                                 wake_lengths == default_wake_lengths),
+              "'Geometry/Domain height' and 'Geometry/Wake lengths' size "
+              "the 2D block; with 'Geometry/Dimension' = 3 the half-space "
+              "is infinite and a layer is as deep as its thickness: remove "
+              "them");
+      require(elongation > 0 && std::isfinite(elongation),
+              entry("Geometry", "Indenter elongation", elongation) +
+                " must be positive");
+      require(std::isfinite(domain_length),
+              entry("Geometry", "Domain length", domain_length) +
+                " must be finite");
       require(domain_width > 0 && std::isfinite(domain_width),
               entry("Geometry", "Domain width", domain_width) +
                 " must be positive");

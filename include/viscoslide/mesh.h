@@ -37,11 +37,23 @@ namespace viscoslide
       double       domain_width;
       double       domain_height;
       double       wake_lengths;
+      // 3D only: R_y/R of the indenter, whose profile is h of
+      // sqrt(x^2 + y^2/elongation), and the surface's extent across the
+      // track (0: the Domain width).
+      double elongation;
+      double domain_length;
 
       static void
       declare(ParameterHandler &prm);
       void
       parse(ParameterHandler &prm);
+
+      // The extent of the 3D surface across the track (y).
+      double
+      length() const
+      {
+        return domain_length > 0 ? domain_length : domain_width;
+      }
 
       // The height of the block actually meshed.
       double

@@ -71,6 +71,68 @@ namespace viscoslide
         }
       return result;
     }
+
+
+    // The smeared traction beyond the window's trailing edge x_b, on the
+    // row of cells |y'| <= h/2, is e^{-(x_b - x')/L} for x' < x_b; its
+    // displacement at (x_b + X, y) on the half-space of unit modulus is
+    //   K(X, y) = 1/pi int_X^inf e^{-(a - X)/L} f(a) da,
+    //   f(a) = int_{-h/2}^{h/2} dy'/sqrt(a^2 + (y - y')^2)
+    //        = asinh((y + h/2)/a) - asinh((y - h/2)/a).
+    // Returns K at X = (j + 1/2) h for j < n_x: from the far end inwards,
+    // each cell's interval by six-point Gauss-Legendre, and beyond the
+    // window on intervals doubling in length until the exponential is
+    // spent.
+    std::vector<double>
+    wake_tail(const unsigned int n_x,
+              const double       h,
+              const double       y,
+              const double       L)
+    {
+      static constexpr double node[6]   = {-0.9324695142031521,
+                                           -0.6612093864662645,
+                                           -0.2386191860831969,
+                                           0.2386191860831969,
+                                           0.6612093864662645,
+                                           0.9324695142031521};
+      static constexpr double weight[6] = {0.1713244923791704,
+                                           0.3607615730481386,
+                                           0.4679139345726910,
+                                           0.4679139345726910,
+                                           0.3607615730481386,
+                                           0.1713244923791704};
+      const auto              f         = [&](const double a) {
+        return std::asinh((y + h / 2) / a) - std::asinh((y - h / 2) / a);
+      };
+      // int_a^b e^{-(x - a)/L} f(x) dx
+      const auto interval = [&](const double a, const double b) {
+        double sum = 0;
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            const double x = 0.5 * (a + b) + 0.5 * (b - a) * node[k];
+            sum += weight[k] * std::exp(-(x - a) / L) * f(x);
+          }
+        return 0.5 * (b - a) * sum;
+      };
+      // Beyond the window, from its far end a = X_n.
+      const double a_n = (n_x + 0.5) * h;
+      double       J = 0, shift = 1, a = a_n, length = h;
+      while (a - a_n < 40 * L)
+        {
+          J += shift * interval(a, a + length);
+          shift *= std::exp(-length / L);
+          a += length;
+          length *= 2;
+        }
+      std::vector<double> K(n_x);
+      const double        decay = std::exp(-h / L);
+      for (int j = n_x - 1; j >= 0; --j)
+        {
+          J    = interval((j + 0.5) * h, (j + 1.5) * h) + decay * J;
+          K[j] = J / M_PI;
+        }
+      return K;
+    }
   } // namespace
 
 
@@ -83,24 +145,47 @@ namespace viscoslide
       , real(fftw_alloc_real(rows * columns))
       , spectrum(fftw_alloc_complex(modes))
       , kernel(modes)
+      , line(fftw_alloc_real(rows))
+      , line_spectrum(fftw_alloc_complex(rows / 2 + 1))
     {
       forward =
         fftw_plan_dft_r2c_2d(rows, columns, real, spectrum, FFTW_MEASURE);
       backward =
         fftw_plan_dft_c2r_2d(rows, columns, spectrum, real, FFTW_MEASURE);
+      line_forward =
+        fftw_plan_dft_r2c_1d(rows, line, line_spectrum, FFTW_MEASURE);
     }
     ~Convolution()
     {
       fftw_destroy_plan(forward);
       fftw_destroy_plan(backward);
+      fftw_destroy_plan(line_forward);
       fftw_free(real);
       fftw_free(spectrum);
+      fftw_free(line);
+      fftw_free(line_spectrum);
+    }
+    // The spectrum of `real`, divided by rows columns.
+    std::vector<std::complex<double>>
+    transform()
+    {
+      fftw_execute(forward);
+      const double normalisation = 1. / (double(rows) * columns);
+      std::vector<std::complex<double>> result(modes);
+      for (unsigned int m = 0; m < modes; ++m)
+        result[m] =
+          normalisation * std::complex<double>(spectrum[m][0], spectrum[m][1]);
+      return result;
     }
     const unsigned int                rows, columns, modes;
     double                           *real;
     fftw_complex                     *spectrum;
     fftw_plan                         forward, backward;
     std::vector<std::complex<double>> kernel; // with 1/(rows columns)
+    // A column of sources (the wake beyond the window) and its transform.
+    double       *line;
+    fftw_complex *line_spectrum;
+    fftw_plan     line_forward;
   };
 
 
@@ -111,6 +196,7 @@ namespace viscoslide
     : n(n)
     , dx(dx)
     , retardation(creep_retardations(material, nu))
+    , wake(retardation.size())
     , convolution(std::make_unique<Convolution>(n))
   {
     // 1/E*(s -> infinity) = 1 - sum_r c_r (1/E*(0) = 1 = E0*).
@@ -129,11 +215,7 @@ namespace viscoslide
             (2 * j < f.columns ? double(j) : double(j) - f.columns) * dx;
           f.real[i * f.columns + j] = love(dxx, dy, dx / 2);
         }
-    fftw_execute(f.forward);
-    const double normalisation = 1. / (double(f.rows) * f.columns);
-    for (unsigned int m = 0; m < f.modes; ++m)
-      f.kernel[m] = normalisation *
-                    std::complex<double>(f.spectrum[m][0], f.spectrum[m][1]);
+    f.kernel = f.transform();
   }
 
 
@@ -144,36 +226,70 @@ namespace viscoslide
   IsolatedCompliance::set_speed(const double speed)
   {
     V = speed;
+    // The wake beyond the window's trailing edge, for the retardations
+    // whose length reaches it from the contact: its influence on the
+    // window, a column source at the edge (column 0 of the padded grid)
+    // acting on the columns j >= 0 of the window.
+    Convolution &f      = *convolution;
+    const double window = n[1] * dx;
+    const int    n_y    = n[0];
+    wake.assign(retardation.size(), {});
+    for (unsigned int r = 0; r < retardation.size(); ++r)
+      {
+        const double L = V * retardation[r].first;
+        if (!(L > window / 70))
+          continue;
+        std::fill(f.real, f.real + f.rows * f.columns, 0.);
+        for (int m = 0; m < n_y; ++m)
+          {
+            const std::vector<double> K = wake_tail(n[1], dx, m * dx, L);
+            for (const int row : {m, m > 0 ? int(f.rows) - m : -1})
+              if (row >= 0)
+                std::copy(K.begin(), K.end(), f.real + row * f.columns);
+          }
+        wake[r] = f.transform();
+      }
   }
 
 
   void
-  IsolatedCompliance::effective_traction(const Vector<double> &q,
-                                         std::vector<double>  &q_eff) const
+  IsolatedCompliance::effective_traction(
+    const Vector<double>             &q,
+    std::vector<double>              &q_eff,
+    std::vector<std::vector<double>> &edge) const
   {
     const unsigned int n_x = n[1], n_y = n[0];
     q_eff.assign(q.begin(), q.end());
     for (double &v : q_eff)
       v *= inverse_glassy;
-    for (const auto &[theta, c] : retardation)
+    edge.assign(retardation.size(), {});
+    for (unsigned int r = 0; r < retardation.size(); ++r)
       {
-        // Each retardation smears q downstream over L = V theta, exactly
-        // for q constant on each cell: the own cell's half and the
-        // cells upstream (larger x), each weighted by its exponential.
+        const auto [theta, c] = retardation[r];
+        if (!wake[r].empty())
+          edge[r].assign(n_y, 0.);
+        // Each retardation smears q downstream over L = V theta. Love's
+        // kernel wants the smeared traction's mean over each cell: exact
+        // for q constant on each cell, and first order in L/dx when the
+        // retardation length is below the cell (a value at the cell's
+        // centre would lose the creep there altogether). T is the smeared
+        // traction at the cell's upstream edge, from the cells beyond it.
         const double L     = V * theta;
         const double decay = L > 0 ? std::exp(-dx / L) : 0.;
-        const double half  = L > 0 ? std::exp(-0.5 * dx / L) : 0.;
+        const double mean  = L > 0 ? L / dx * (1. - decay) : 0.;
         for (unsigned int row = 0; row < n_y; ++row)
           {
             const double *p = q.begin() + row * n_x;
             double       *e = q_eff.data() + row * n_x;
-            double        S = 0.;
+            double        T = 0.;
             for (int i = n_x - 1; i >= 0; --i)
               {
                 if (i + 1 < int(n_x))
-                  S = decay * S + p[i + 1] * half * (1. - decay);
-                e[i] += c * (p[i] * (1. - half) + S);
+                  T = decay * T + (1. - decay) * p[i + 1];
+                e[i] += c * ((1. - mean) * p[i] + mean * T);
               }
+            if (!edge[r].empty())
+              edge[r][row] = c * (decay * T + (1. - decay) * p[0]);
           }
       }
   }
@@ -182,9 +298,10 @@ namespace viscoslide
   void
   IsolatedCompliance::apply(const Vector<double> &q, Vector<double> &u) const
   {
-    const unsigned int  n_x = n[1], n_y = n[0];
-    std::vector<double> q_eff;
-    effective_traction(q, q_eff);
+    const unsigned int               n_x = n[1], n_y = n[0];
+    std::vector<double>              q_eff;
+    std::vector<std::vector<double>> edge;
+    effective_traction(q, q_eff, edge);
     Convolution &f = *convolution;
     std::fill(f.real, f.real + f.rows * f.columns, 0.);
     for (unsigned int row = 0; row < n_y; ++row)
@@ -199,12 +316,41 @@ namespace viscoslide
                      c = f.kernel[m].real(), d = f.kernel[m].imag();
         spectrum[m] = {a * c - b * d, a * d + b * c};
       }
+    add_wake(edge);
     fftw_execute(f.backward);
     u.reinit(n_x * n_y, true);
     for (unsigned int row = 0; row < n_y; ++row)
       std::copy(f.real + row * f.columns,
                 f.real + row * f.columns + n_x,
                 u.begin() + row * n_x);
+  }
+
+
+  void
+  IsolatedCompliance::add_wake(
+    const std::vector<std::vector<double>> &edge) const
+  {
+    Convolution &f       = *convolution;
+    auto       *spectrum = reinterpret_cast<std::complex<double> *>(f.spectrum);
+    const auto *line =
+      reinterpret_cast<std::complex<double> *>(f.line_spectrum);
+    const unsigned int n_k_x = f.columns / 2 + 1;
+    for (unsigned int r = 0; r < edge.size(); ++r)
+      if (!edge[r].empty())
+        {
+          // The column's transform is the same for every k_x.
+          std::fill(f.line, f.line + f.rows, 0.);
+          std::copy(edge[r].begin(), edge[r].end(), f.line);
+          fftw_execute(f.line_forward);
+          for (unsigned int k_y = 0; k_y < f.rows; ++k_y)
+            {
+              const std::complex<double> source =
+                2 * k_y <= f.rows ? line[k_y] : std::conj(line[f.rows - k_y]);
+              for (unsigned int k_x = 0; k_x < n_k_x; ++k_x)
+                spectrum[k_y * n_k_x + k_x] +=
+                  source * wake[r][k_y * n_k_x + k_x];
+            }
+        }
   }
 
 

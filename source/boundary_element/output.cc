@@ -2,6 +2,8 @@
 // profile and, in 3D, the map of the surface.
 #include <viscoslide/boundary_element/solver.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -38,27 +40,77 @@ namespace viscoslide
           {
             const double du_dx = (u[next(j)] - u[previous(j)]) / (2 * dx);
             q.contact_set_tangential_force += p * du_dx * dA;
-            q.y_half = std::max(q.y_half, std::abs(y[j]) + 0.5 * dx);
           }
         q.minimum_gap = std::min(q.minimum_gap, gaps[j]);
-        // The contact set between j and its neighbour along x, the gap
-        // linear in between; in 3D each row stands for a strip dx wide.
+        // The contact set's edges between j and its neighbours, the gap
+        // linear in between; in 2D its length.
         const double g0 = gaps[j], g1 = gaps[next(j)];
-        const double strip = dA / dx;
-        if (g0 < gc && g1 < gc)
-          q.contact_length += dx * strip;
+        if (dim == 2 && g0 < gc && g1 < gc)
+          q.contact_length += dx;
         else if ((g0 < gc) != (g1 < gc))
           {
             const double t = (gc - g0) / (g1 - g0);
-            q.contact_length += (g0 < gc ? t : 1. - t) * dx * strip;
+            if (dim == 2)
+              q.contact_length += (g0 < gc ? t : 1. - t) * dx;
             const double edge = x[j] + t * dx;
             q.x_trail         = std::min(q.x_trail, edge);
             q.x_lead          = std::max(q.x_lead, edge);
           }
+        if (dim == 3 && j + n_x < n && (g0 < gc) != (gaps[j + n_x] < gc))
+          {
+            const double t = (gc - g0) / (gaps[j + n_x] - g0);
+            q.y_half       = std::max(q.y_half, std::abs(y[j] + t * dx));
+          }
       }
+    if (dim == 3)
+      q.contact_length = contact_area(gc);
     if (q.x_lead < q.x_trail)
       q.x_trail = q.x_lead = 0.;
     last_quantities = q;
+  }
+
+
+  namespace
+  {
+    // The part of a triangle where a linear function of vertex values g
+    // is below c.
+    double
+    fraction_below(std::array<double, 3> g, const double c)
+    {
+      std::sort(g.begin(), g.end());
+      if (c <= g[0])
+        return 0.;
+      if (c >= g[2])
+        return 1.;
+      if (c <= g[1])
+        return (c - g[0]) * (c - g[0]) / ((g[1] - g[0]) * (g[2] - g[0]));
+      return 1. - (g[2] - c) * (g[2] - c) / ((g[2] - g[0]) * (g[2] - g[1]));
+    }
+  } // namespace
+
+
+  template <int dim>
+  double
+  BoundaryElementSolver<dim>::contact_area(const double gc) const
+  {
+    // Each square of four neighbouring points as two triangles, the gap
+    // linear on each: second order in the spacing for a smooth edge (a
+    // row's length times dx is not, at the rows near the edge across the
+    // track).
+    const unsigned int n_x = shape[dim - 2], n_y = u.size() / n_x;
+    double             area = 0;
+    for (unsigned int b = 0; b + 1 < n_y; ++b)
+      for (unsigned int a = 0; a + 1 < n_x; ++a)
+        {
+          const unsigned int j = b * n_x + a;
+          const double g00 = gaps[j], g10 = gaps[j + 1], g01 = gaps[j + n_x],
+                       g11 = gaps[j + n_x + 1];
+          if (std::min({g00, g10, g01, g11}) >= gc)
+            continue;
+          area += fraction_below({{g00, g10, g11}}, gc) +
+                  fraction_below({{g00, g01, g11}}, gc);
+        }
+    return 0.5 * area * dx * dx;
   }
 
 
@@ -99,39 +151,44 @@ namespace viscoslide
   BoundaryElementSolver<dim>::write_map(const std::string &path,
                                         const std::string &what) const
   {
-    // VTK image data (ParaView): the square about the contact where the
-    // surfaces are within 10 eps, with a margin of a quarter of its size,
-    // every point; pressure in sigma_max, gap and displacement in eps,
-    // lengths in R.
+    // VTK image data (ParaView): the rectangle about the contact where
+    // the surfaces are within 10 eps, with a margin of a quarter of its
+    // size, every point; pressure in sigma_max, gap and displacement in
+    // eps, lengths in R.
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     const unsigned int n_x = shape[dim - 2], n_y = shape[0];
-    double             extent = 0;
+    double             extent_x = 0, extent_y = 0;
     for (unsigned int j = 0; j < u.size(); ++j)
       if (gaps[j] < 10 * scales.eps)
-        extent = std::max({extent, std::abs(x[j]), std::abs(y[j])});
-    extent = 1.25 * extent + 4 * dx;
-    const unsigned int half =
-      std::min<unsigned int>(std::ceil(extent / dx),
-                             std::min(n_x, n_y) / 2 - 1);
-    const unsigned int i0 = n_x / 2 - half, j0 = n_y / 2 - half,
-                       m = 2 * half + 1;
+        {
+          extent_x = std::max(extent_x, std::abs(x[j]));
+          extent_y = std::max(extent_y, std::abs(y[j]));
+        }
+    const auto half_points = [this](const double extent, const unsigned n) {
+      return std::min<unsigned int>(std::ceil((1.25 * extent + 4 * dx) / dx),
+                                    n / 2 - 1);
+    };
+    const unsigned int half_x = half_points(extent_x, n_x),
+                       half_y = half_points(extent_y, n_y);
+    const unsigned int i0 = n_x / 2 - half_x, j0 = n_y / 2 - half_y,
+                       m_x = 2 * half_x + 1, m_y = 2 * half_y + 1;
     std::ofstream out(path);
     out << "<?xml version=\"1.0\"?>\n<!-- " << what << " -->\n"
         << "<VTKFile type=\"ImageData\" version=\"0.1\">\n"
-        << "<ImageData WholeExtent=\"0 " << m - 1 << " 0 " << m - 1
-        << " 0 0\" Origin=\"" << -double(half) * dx / scales.R << " "
-        << -double(half) * dx / scales.R << " 0\" Spacing=\"" << dx / scales.R
+        << "<ImageData WholeExtent=\"0 " << m_x - 1 << " 0 " << m_y - 1
+        << " 0 0\" Origin=\"" << -double(half_x) * dx / scales.R << " "
+        << -double(half_y) * dx / scales.R << " 0\" Spacing=\"" << dx / scales.R
         << " " << dx / scales.R << " 1\">\n"
-        << "<Piece Extent=\"0 " << m - 1 << " 0 " << m - 1 << " 0 0\">\n"
+        << "<Piece Extent=\"0 " << m_x - 1 << " 0 " << m_y - 1 << " 0 0\">\n"
         << "<PointData Scalars=\"p_hat\">\n";
     const auto field = [&](const char *name, const auto &value) {
       out << "<DataArray type=\"Float64\" Name=\"" << name
           << "\" format=\"ascii\">\n"
           << std::setprecision(8);
-      for (unsigned int b = 0; b < m; ++b)
-        for (unsigned int a = 0; a < m; ++a)
-          out << value((j0 + b) * n_x + i0 + a) << (a + 1 < m ? ' ' : '\n');
+      for (unsigned int b = 0; b < m_y; ++b)
+        for (unsigned int a = 0; a < m_x; ++a)
+          out << value((j0 + b) * n_x + i0 + a) << (a + 1 < m_x ? ' ' : '\n');
       out << "</DataArray>\n";
     };
     field("p_hat",
@@ -149,6 +206,7 @@ namespace viscoslide
 #define VISCOSLIDE_INSTANTIATE(dim)                                              \
   template void   BoundaryElementSolver<dim>::update_quantities();               \
   template double BoundaryElementSolver<dim>::dissipation_rate() const;          \
+  template double BoundaryElementSolver<dim>::contact_area(double) const;        \
   template void   BoundaryElementSolver<dim>::write_profile(const std::string &) \
     const;                                                                       \
   template void BoundaryElementSolver<dim>::write_map(const std::string &,       \

@@ -101,11 +101,15 @@ namespace viscoslide
         const long i_x = j % n_x, i_y = j / n_x;
         x[j] = (double(i_x) - n_x / 2) * dx;
         y[j] = dim == 2 ? 0. : (double(i_y) - n_y / 2) * dx;
-        // In 3D the body of revolution of the profile.
-        const double r = dim == 2 ? x[j] : std::hypot(x[j], y[j]);
-        h[j]           = indenter.profile(r);
-        slope[j]       = dim == 2 ? indenter.slope(x[j])
-                                  : (r > 0 ? indenter.slope(r) * x[j] / r : 0.);
+        // In 3D the body of revolution of the profile, stretched across
+        // the track by the elongation.
+        const double r =
+          dim == 2
+            ? x[j]
+            : std::hypot(x[j], y[j] / std::sqrt(prm.geometry.elongation));
+        h[j]     = indenter.profile(r);
+        slope[j] = dim == 2 ? indenter.slope(x[j])
+                            : (r > 0 ? indenter.slope(r) * x[j] / r : 0.);
         // The same point on the old grid; beyond it, its nearer end.
         if (old_u.size() > 0)
           {
@@ -138,7 +142,8 @@ namespace viscoslide
   BoundaryElementSolver<dim>::fit_period(const double V)
   {
     // The isolated half-space of 3D needs no period: its window is the
-    // Domain width wide in both directions at every speed.
+    // Domain width along the track and the Domain length across it at
+    // every speed.
     const double wake = V * longest_creep_time(prm) * scales.eps;
     const double period =
       isolated_half_space() ? prm.geometry.domain_width * scales.eps
@@ -152,8 +157,8 @@ namespace viscoslide
     std::array<unsigned int, dim - 1> new_shape;
     new_shape[dim - 2] = multiple * fft_size(period / dx / multiple);
     if constexpr (dim == 3)
-      new_shape[0] = multiple * fft_size(prm.geometry.domain_width *
-                                         scales.eps / dx / multiple);
+      new_shape[0] =
+        multiple * fft_size(prm.geometry.length() * scales.eps / dx / multiple);
     const unsigned int n_x = new_shape[dim - 2], old_x = shape[dim - 2];
     if (u.size() == 0 || n_x > old_x || 4 * n_x < old_x)
       make_grid(new_shape);

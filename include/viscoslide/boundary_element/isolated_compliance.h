@@ -18,12 +18,13 @@
 // a square cell on the elastic half-space of unit modulus (Johnson,
 // Contact Mechanics, eq. 3.25), applied as a linear (not circular)
 // convolution by FFTs on a grid of twice the window in each direction
-// (zero padding). The smearing is exact for tractions constant on each
-// cell and runs along each row of the window; what it carries beyond the
-// window's trailing edge is dropped: nothing at rest, but when the creep
-// acts over lengths beyond the window (V_hat 100: V tau_c = 1000 eps) its
-// effect on the contact falls only as the inverse of the window
-// (doc/sphere.md, Convergence).
+// (zero padding). Love's kernel takes each cell's mean of q_eff, exact
+// for q constant on each cell (also where L_r is below the cell). The
+// smeared traction beyond the window's trailing edge is the exponential
+// e^{-(x_b - x)/L_r} times its value at the edge x_b, row by row: its
+// displacement in the window is a column source at the edge with a kernel
+// integrated once per speed (wake_tail), so that the wake is whole however
+// far the creep carries it (V_hat 100: V tau_c = 1000 eps).
 #ifndef viscoslide_boundary_element_isolated_compliance_h
 #define viscoslide_boundary_element_isolated_compliance_h
 
@@ -33,6 +34,7 @@
 #include <viscoslide/material.h>
 
 #include <array>
+#include <complex>
 #include <memory>
 #include <vector>
 
@@ -68,16 +70,28 @@ namespace viscoslide
     dissipation_rate(const Vector<double> &q) const override;
 
   private:
-    // q_eff of q on the window.
+    // q_eff of q on the window, and for each retardation whose wake
+    // reaches beyond the window its smeared traction at the trailing
+    // edge, per row.
     void
-    effective_traction(const Vector<double> &q,
-                       std::vector<double>  &q_eff) const;
+    effective_traction(const Vector<double>             &q,
+                       std::vector<double>              &q_eff,
+                       std::vector<std::vector<double>> &edge) const;
+
+    // Adds the displacement of the wakes beyond the trailing edge (their
+    // edge values times their exponential tails) to the transformed
+    // displacement of the convolution.
+    void
+    add_wake(const std::vector<std::vector<double>> &edge) const;
 
     const std::array<unsigned int, 2>      n;
     const double                           dx;
     double                                 V = 0;
     double                                 inverse_glassy; // 1/Einf*
     std::vector<std::pair<double, double>> retardation;    // (theta_r, c_r)
+    // Per retardation, the transformed influence of its wake beyond the
+    // window (empty where the wake ends inside the window).
+    std::vector<std::vector<std::complex<double>>> wake;
     // FFTW's plans, buffers and the transformed kernel, kept out of this
     // header.
     struct Convolution;

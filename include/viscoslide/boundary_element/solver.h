@@ -173,6 +173,9 @@ namespace viscoslide
     // The traction q_j, its tangent dq/dg and the gaps. [output.cc]
     void
     update_quantities();
+    // In 3D: the area where the gap is below gc. [output.cc]
+    double
+    contact_area(double gc) const;
     // In 3D: the map of the surface about the contact as VTK image data.
     // [output.cc]
     void

@@ -4,7 +4,7 @@ the error of mu and L_hat at three mesh levels, the differences between
 levels and the observed order, from which the tests' tolerances are argued
 (doc/tests.md).
 
-    scripts/convergence [hunter|adhesive|all]
+    scripts/convergence [hunter|adhesive|adhesive_muT1|sphere|all]
 
 A level halves every cell: the finest surface cell and the grading
 (cell size per distance from the contact edges) together. Each study
@@ -18,7 +18,15 @@ shown on standard error as they come, one every 10 s.
 
 The speeds stop at 100 where the reference's own period error (1e-3 in
 mu at V_hat 1000, its README) would hide the mesh's, and the block is
-the one the tests' whole curves get (widened for V_hat 1000)."""
+the one the tests' whole curves get (widened for V_hat 1000).
+
+`sphere` has no reference curve: the 3D boundary elements of
+parameter_files/sphere_friction.prm on grids of 1, 0.5 (the file's) and
+0.25 eps in its 160-eps window, and on the file's grid in a 240-eps
+window. Printed per speed: mu and A_hat per grid, the observed order, the
+difference of each grid from the value extrapolated from the two finest
+(Richardson, at the observed order), the change with the window, and the
+energy balance mu_energy/mu - 1 per grid."""
 import math
 import os
 import subprocess
@@ -44,6 +52,11 @@ STUDIES = {
                       ['0.01', '0.1', '10', '100'], [(4, 0.5), (2, 0.25), (1, 0.125)],
                       {'Geometry/Domain width': 200000, 'Geometry/Domain height': 50000}),
 }
+
+
+# The sphere's study: speeds, grids (finest surface cell, twice the
+# spacing) and the larger window.
+SPHERE = ('parameter_files/sphere_friction.prm', ['1', '10', '100'], [2, 1, 0.5], 240)
 
 
 def run_level(viscoslide, source, work, name, speeds, cell, grading, other):
@@ -115,15 +128,62 @@ def study(name, work):
         report(quantity, levels, values, reference)
 
 
+def extrapolated(values):
+    """Richardson's value from three levels at their observed order (nan
+    where the changes do not shrink)."""
+    p = order(values)
+    return values[2] + (values[2] - values[1]) / (2 ** p - 1)
+
+
+def measure_sphere(work, viscoslide=VISCOSLIDE, root=ROOT):
+    """The sphere's study: {(V_hat, quantity): values} with quantity mu,
+    A_hat and balance (mu_energy/mu - 1) per grid, and mu_window,
+    A_hat_window in the larger window on the file's grid."""
+    source, speeds, cells, window = SPHERE
+    other = {'Sliding/Solver': 'boundary-element'}
+    path = os.path.join(root, source)
+    results = [run_level(viscoslide, path, work, f'sphere_grid{k}', speeds, cell, 0.25, other)
+               for k, cell in enumerate(cells)]
+    wide = run_level(viscoslide, path, work, 'sphere_window', speeds, cells[1], 0.25,
+                     {**other, 'Geometry/Domain width': window})
+    found = {}
+    for i, v in enumerate(speeds):
+        V = float(v)
+        found[V, 'mu'] = [r[i]['mu'] for r in results]
+        found[V, 'A_hat'] = [r[i]['A_hat'] for r in results]
+        found[V, 'balance'] = [r[i]['mu_energy'] / r[i]['mu'] - 1 for r in results]
+        found[V, 'mu_window'] = wide[i]['mu']
+        found[V, 'A_hat_window'] = wide[i]['A_hat']
+    return found
+
+
+def sphere_study(work):
+    source, speeds, cells, window = SPHERE
+    found = measure_sphere(work)
+    print(f'sphere: {source}, grids of {", ".join(f"{c / 2:g}" for c in cells)} eps, '
+          f'windows 160 and {window} eps')
+    for v in speeds:
+        V = float(v)
+        print(f'  V_hat {V:g}')
+        for quantity in ('mu', 'A_hat'):
+            values, best = found[V, quantity], extrapolated(found[V, quantity])
+            for cell, value in zip(cells, values):
+                print(f'    {quantity:<6} grid {cell / 2:<5g} {value:.6g}  '
+                      f'from extrapolated {value / best - 1:+.3e}')
+            print(f'    {quantity:<6} observed order {order(values):.2f}; window {window}: '
+                  f'{found[V, quantity + "_window"] / values[1] - 1:+.3e}')
+        print('    balance ' + ', '.join(f'{b:+.3e}' for b in found[V, 'balance']))
+
+
 def main(argv):
     prepare()
-    names = list(STUDIES) if not argv or argv[0] == 'all' else argv
-    unknown = [n for n in names if n not in STUDIES]
+    names = list(STUDIES) + ['sphere'] if not argv or argv[0] == 'all' else argv
+    unknown = [n for n in names if n not in STUDIES and n != 'sphere']
     if unknown:
-        sys.exit(f'convergence: unknown study {unknown[0]!r}; choose from {", ".join(STUDIES)} or all')
+        sys.exit(f'convergence: unknown study {unknown[0]!r}; choose from {", ".join(STUDIES)}, sphere or all')
     work = tempfile.mkdtemp(prefix='viscoslide-convergence-')
     for name in names:
-        study(name, work)
+        sphere_study(work) if name == 'sphere' else study(name, work)
     print(f'outputs and logs in {work}')
 
 

@@ -234,14 +234,18 @@ def sphere_curve(argv):
     """The sphere's friction curve (parameter_files/sphere_friction.prm:
     muT 3, F_hat 1, 21 speeds from 0.01 to 1000, approach included) by the
     3D boundary elements on one process, at R_hat (default 100) with the
-    window and the grid spacing scaled as the contact, sqrt(R_hat): the
-    wall time, the grid, GMRES iterations per Newton step, the rows."""
+    window scaled as the contact, sqrt(R_hat), and the grid spacing too or
+    as given (in eps; the file's is 0.5): the wall time, the grid, GMRES
+    iterations per Newton step, the rows.
+
+        scripts/bench_sphere [R_hat [spacing]]"""
     prepare()
     R_hat = float(argv[0]) if argv else 100.
     scale = math.sqrt(R_hat / 100.)
+    spacing = float(argv[1]) if len(argv) > 1 else 0.5 * scale
     work = tempfile.mkdtemp()
     changes = {'Output/Output directory': f'{work}/out', 'Adhesion/R over eps': R_hat,
-               'Geometry/Domain width': 160 * scale, 'Mesh/Finest surface cell': scale}
+               'Geometry/Domain width': 160 * scale, 'Mesh/Finest surface cell': 2 * spacing}
     path = prm.override_file('parameter_files/sphere_friction.prm',
                              os.path.join(work, 'run.prm'), changes)
     log = os.path.join(work, 'log')

@@ -108,6 +108,8 @@ def param_text(key, v):
     """The legend / caption text of one parameter's value."""
     if key == 'control':
         return f'{v} control'
+    if key == 'indenter':
+        return v
     if key == 'solver':
         return SOLVER.get(v, v)
     if key == 'time_constant':
@@ -129,6 +131,7 @@ def curve_params(rows):
         texts = {param_text(key, v) for v in values}
         out[key] = (values[0], texts.pop()) if len(texts) == 1 else (None, None)
 
+    same('indenter', ['sphere' if 'A_hat' in r else 'cylinder' for r in rows])
     same('mu_T', [fnum(r.get('mu_T')) for r in rows])
     same('R_hat', [fnum(r.get('R_hat')) for r in rows])
     same('t', [thickness(r) for r in rows])
@@ -144,7 +147,7 @@ def curve_params(rows):
     return out
 
 
-ORDER = ['mu_T', 'R_hat', 't', 'control', 'load', 'solver', 'time_constant']
+ORDER = ['indenter', 'mu_T', 'R_hat', 't', 'control', 'load', 'solver', 'time_constant']
 NUMERIC = {'mu_T', 'R_hat', 't', 'load'}
 
 
@@ -221,7 +224,10 @@ def describe(curves, label_column):
     for c in curves:
         c.params = curve_params(c.rows)
     varying, fixed = [], []
+    spheres = [c.has('A_hat') for c in curves]
     for key in ORDER:
+        if key == 'indenter' and not any(spheres):
+            continue  # a cylinder goes without saying
         texts = [c.params[key][1] for c in curves]
         if any(t is None for t in texts):
             continue  # not constant along some curve: neither legend nor caption
@@ -230,8 +236,8 @@ def describe(curves, label_column):
         elif key != 'time_constant' or curves[0].params[key][0] != 'relaxation':
             fixed.append(texts[0])
     caption = ', '.join(fixed)
-    if any(c.has('A_hat') for c in curves):  # a sphere (3D)
-        caption = 'sphere, ' + caption.replace('half-plane', 'half-space')
+    if any(spheres):  # 3D, or a cylinder beside a sphere
+        caption = caption.replace('half-plane', 'half-space')
     if label_column:
         for c in curves:
             v = c.rows[0].get(label_column, '')

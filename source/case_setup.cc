@@ -241,9 +241,9 @@ namespace viscoslide
               << "spacing " << spacing << " eps) needs about " << gigabytes
               << " GB, this machine has " << max_grid_gigabytes / 0.8
               << " GB: raise 'Boundary element/Grid spacing' "
-                 "or lower 'Geometry/Domain width', 'Geometry/Domain length', "
-                 "'Boundary element/"
-                 "Period' or 'Boundary element/Wake periods'";
+                 "or lower 'Geometry/Domain width', 'Geometry/Domain "
+                 "length', 'Boundary element/Period' or 'Boundary "
+                 "element/Wake periods'";
       require(gigabytes <= max_grid_gigabytes, message.str());
     }
 

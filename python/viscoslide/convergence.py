@@ -24,8 +24,8 @@ the one the tests' whole curves get (widened for V_hat 1000).
 parameter_files/sphere_friction.prm on grids of 1, 0.5 (the file's) and
 0.25 eps in its 160-eps window, and on the file's grid in a 240-eps
 window. Printed per speed: mu and A_hat per grid, the observed order, the
-difference of each grid from the value extrapolated from the two finest
-(Richardson, at the observed order), the change with the window, and the
+difference of each grid from Richardson's value, extrapolated from the
+three at their observed order, the change with the window, and the
 energy balance mu_energy/mu - 1 per grid."""
 import math
 import os
@@ -60,8 +60,10 @@ SPHERE = ('parameter_files/sphere_friction.prm', ['1', '10', '100'], [2, 1, 0.5]
 
 
 def run_level(viscoslide, source, work, name, speeds, cell, grading, other):
-    """viscoslide on source at one mesh level, finite elements only: the
-    rows of its steady_state.csv. With VISCOSLIDE_CHECK_ONLY set, the
+    """viscoslide on source at one mesh level, by the finite elements
+    unless `other` names another solver: the rows of its
+    steady_state.csv. With VISCOSLIDE_CHECK_ONLY set (a check run by hand
+    in a work folder that holds the levels' output), the
     level's earlier output is read instead of running it again."""
     out = os.path.join(work, name)
     if os.environ.get('VISCOSLIDE_CHECK_ONLY'):

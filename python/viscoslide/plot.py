@@ -238,6 +238,8 @@ def describe(curves, label_column):
     caption = ', '.join(fixed)
     if any(spheres):  # 3D, or a cylinder beside a sphere
         caption = caption.replace('half-plane', 'half-space')
+    if any(spheres) and not all(spheres):  # loads per length and total
+        caption += r", $\hat F$ in each indenter's unit"
     if label_column:
         for c in curves:
             v = c.rows[0].get(label_column, '')

@@ -43,13 +43,17 @@ namespace viscoslide
           }
         q.minimum_gap = std::min(q.minimum_gap, gaps[j]);
         // The contact set's edges between j and its neighbours, the gap
-        // linear in between; in 2D its length.
+        // linear in between (the fraction of the way where it crosses gc);
+        // in 2D its length.
         const double g0 = gaps[j], g1 = gaps[next(j)];
+        const auto   crossing = [g0, gc](const double g) {
+          return (gc - g0) / (g - g0);
+        };
         if (dim == 2 && g0 < gc && g1 < gc)
           q.contact_length += dx;
         else if ((g0 < gc) != (g1 < gc))
           {
-            const double t = (gc - g0) / (g1 - g0);
+            const double t = crossing(g1);
             if (dim == 2)
               q.contact_length += (g0 < gc ? t : 1. - t) * dx;
             const double edge = x[j] + t * dx;
@@ -57,10 +61,8 @@ namespace viscoslide
             q.x_lead          = std::max(q.x_lead, edge);
           }
         if (dim == 3 && j + n_x < n && (g0 < gc) != (gaps[j + n_x] < gc))
-          {
-            const double t = (gc - g0) / (gaps[j + n_x] - g0);
-            q.y_half       = std::max(q.y_half, std::abs(y[j] + t * dx));
-          }
+          q.y_half =
+            std::max(q.y_half, std::abs(y[j] + crossing(gaps[j + n_x]) * dx));
       }
     if (dim == 3)
       q.contact_length = contact_area(gc);

@@ -3,10 +3,43 @@
 #include <viscoslide/newton.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace viscoslide
 {
+  namespace
+  {
+    // A line at least every 10 s while one solve runs long (a large 3D
+    // grid spends minutes in one step), so that a user sees it progress.
+    class Heartbeat
+    {
+    public:
+      bool
+      due()
+      {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last < std::chrono::seconds(10))
+          return false;
+        last = now;
+        return true;
+      }
+      double
+      seconds() const
+      {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             start)
+          .count();
+      }
+
+    private:
+      std::chrono::steady_clock::time_point start =
+                                              std::chrono::steady_clock::now(),
+                                            last = start;
+    };
+  } // namespace
+
+
   int
   newton(const NewtonProblem &p,
          const unsigned int   max_iterations,
@@ -17,6 +50,7 @@ namespace viscoslide
     p.assemble(true);
     double       residual = p.residual_norm();
     unsigned int crawling = 0; // consecutive steps cut to alpha <= 1/16
+    Heartbeat    heartbeat;
     for (unsigned int it = 0; it <= max_iterations; ++it)
       {
         if (!std::isfinite(residual))
@@ -26,9 +60,10 @@ namespace viscoslide
             return -1;
           }
         const double tolerance = p.tolerance();
-        if (verbose)
+        if (verbose || heartbeat.due())
           out << "      Newton " << it << ": residual " << residual
-              << " (tolerance " << tolerance << ")" << std::endl;
+              << " (tolerance " << tolerance << "), " << heartbeat.seconds()
+              << " s in this solve" << std::endl;
         if (residual <= tolerance)
           return it;
         if (it == max_iterations)
@@ -123,7 +158,8 @@ namespace viscoslide
     double c = c0;
     p.set_dashpot(0.);
     p.assemble(false);
-    double residual = p.residual_norm();
+    double    residual = p.residual_norm();
+    Heartbeat heartbeat;
     for (unsigned int k = 0; k < max_steps; ++k)
       {
         if (residual <= p.tolerance())
@@ -154,9 +190,10 @@ namespace viscoslide
         p.set_dashpot(0.);
         p.assemble(false);
         const double r = p.residual_norm();
-        if (verbose)
-          out << "      relaxation " << k << ": residual " << r << ", dashpot "
-              << c << std::endl;
+        if (verbose || heartbeat.due())
+          out << "      relaxation " << k << " (of at most " << max_steps
+              << "): residual " << r << ", dashpot " << c << ", "
+              << heartbeat.seconds() << " s in this solve" << std::endl;
         if (!std::isfinite(r) || !std::isfinite(moved))
           {
             p.step(0.);

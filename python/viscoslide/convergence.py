@@ -4,7 +4,7 @@ the error of mu and L_hat at three mesh levels, the differences between
 levels and the observed order, from which the tests' tolerances are argued
 (doc/tests.md).
 
-    scripts/convergence [hunter|adhesive|adhesive_muT1|sphere|all]
+    scripts/convergence [hunter|adhesive|adhesive_muT1|sphere|dissipation|all]
 
 A level halves every cell: the finest surface cell and the grading
 (cell size per distance from the contact edges) together. Each study
@@ -26,7 +26,18 @@ parameter_files/sphere_friction.prm on grids of 1, 0.5 (the file's) and
 window. Printed per speed: mu and A_hat per grid, the observed order, the
 difference of each grid from Richardson's value, extrapolated from the
 three at their observed order, the change with the window, and the
-energy balance mu_energy/mu - 1 per grid."""
+energy balance mu_energy/mu - 1 per grid.
+
+`dissipation` has no reference curve either: where Fig. 5's steady states
+(parameter_files/fig05_dissipation_maps.prm, V_hat 1 and 50) dissipate,
+at the levels (finest cell, grading) of DISSIPATION: the first three
+halve both, the last refines the bulk alone (grading 0.0625: cells of
+31 eps under the contact's middle, of 10 eps within 160 eps of its ends,
+against V tau_c = 10 eps at V_hat 1). Printed per speed and level: the
+total dissipation per sliding distance and its shares within 10 eps of
+the surface, behind the apex and in the bulk under the contact
+(viscoslide.claims.dissipation_shares, on the written field), with the
+change from the previous level."""
 import math
 import os
 import subprocess
@@ -57,6 +68,11 @@ STUDIES = {
 # The sphere's study: speeds, grids (finest surface cell, twice the
 # spacing) and the larger window.
 SPHERE = ('parameter_files/sphere_friction.prm', ['1', '10', '100'], [2, 1, 0.5], 240)
+
+
+# Fig. 5's study: its input and the levels (finest surface cell, grading).
+DISSIPATION = ('parameter_files/fig05_dissipation_maps.prm',
+               [(2, 0.5), (1, 0.25), (0.5, 0.125), (1, 0.0625)])
 
 
 def run_level(viscoslide, source, work, name, speeds, cell, grading, other):
@@ -180,15 +196,52 @@ def sphere_study(work):
         print('    balance ' + ', '.join(f'{b:+.3e}' for b in found[V, 'balance']))
 
 
+SHARES = ('surface', 'trailing', 'bulk_under_contact')
+
+
+def measure_dissipation(work, viscoslide=VISCOSLIDE, root=ROOT):
+    """Fig. 5's study: {(V_hat, quantity): values per level} for the total
+    dissipation per sliding distance and the SHARES."""
+    from . import claims
+    source, levels = DISSIPATION
+    found = {}
+    for k, (cell, grading) in enumerate(levels):
+        name = f'dissipation_level{k}'
+        rows = run_level(viscoslide, os.path.join(root, source), work, name, ['1', '50'],
+                         cell, grading, {})
+        for i, r in enumerate(rows):
+            d = claims.dissipation_shares(os.path.join(work, name), i, r['R_hat'])
+            found.setdefault((r['V_hat'], 'per_distance'), []).append(d['total'] / r['V_hat'])
+            for share in SHARES:
+                found.setdefault((r['V_hat'], share), []).append(d[share])
+    return found
+
+
+def dissipation_study(work):
+    source, levels = DISSIPATION
+    found = measure_dissipation(work)
+    print(f'dissipation: {source}, levels (finest cell, grading) {levels}')
+    for V in sorted({V for V, _ in found}):
+        print(f'  V_hat {V:g}')
+        for quantity in ('per_distance',) + SHARES:
+            values = found[V, quantity]
+            print(f'    {quantity:<18} ' + '  '.join(
+                f'{v:.4g}' + (f' ({v / values[k - 1] - 1:+.1%})' if k else '')
+                for k, v in enumerate(values)))
+
+
 def main(argv):
     prepare()
-    names = list(STUDIES) + ['sphere'] if not argv or argv[0] == 'all' else argv
-    unknown = [n for n in names if n not in STUDIES and n != 'sphere']
+    names = (list(STUDIES) + ['sphere', 'dissipation'] if not argv or argv[0] == 'all'
+             else argv)
+    unknown = [n for n in names if n not in STUDIES and n not in ('sphere', 'dissipation')]
     if unknown:
-        sys.exit(f'convergence: unknown study {unknown[0]!r}; choose from {", ".join(STUDIES)}, sphere or all')
+        sys.exit(f'convergence: unknown study {unknown[0]!r}; choose from '
+                 f'{", ".join(STUDIES)}, sphere, dissipation or all')
     work = tempfile.mkdtemp(prefix='viscoslide-convergence-')
     for name in names:
-        sphere_study(work) if name == 'sphere' else study(name, work)
+        {'sphere': sphere_study, 'dissipation': dissipation_study}.get(
+            name, lambda w: study(name, w))(work)
     print(f'outputs and logs in {work}')
 
 

@@ -67,10 +67,15 @@ def draw(fig, out):
     extra = ['--maxima', MAXIMA[fig]] if fig in MAXIMA else []
     subprocess.run(['scripts/plot', out, '-o', f'{out}/{fig}', *extra], check=True)
     if fig == 'fig05':
+        # Per speed: the contact and the solid beneath it, and the trailing
+        # end of the contact up close, each on a log and a linear scale.
         for k, row in enumerate(tables.read(f'{out}/steady_state.csv', text=True)):
             V = row['V_hat']
-            subprocess.run(['scripts/plot_field', f'{out}/steady_{k:05d}.pvtu', 'dissipation_rate',
-                            '--per-speed', V, '-o', f'{out}/fig05_V{V}'], check=True)
+            field = [f'{out}/steady_{k:05d}.pvtu', 'dissipation_rate', '--per-speed', V, '--both']
+            subprocess.run(['scripts/plot_field', *field, '--width', '1600', '--depth', '400',
+                            '-o', f'{out}/fig05_V{V}'], check=True)
+            subprocess.run(['scripts/plot_field', *field, '--center', 'trailing', '--width', '160',
+                            '--depth', '40', '-o', f'{out}/fig05_V{V}_trailing'], check=True)
 
 
 def main(argv=None):

@@ -3,27 +3,34 @@ colour map near the contact, PNG (200 dpi) and PDF (the dissipation maps
 of Fig. 5).
 
     scripts/plot_field FILE.pvtu [FIELD] [-o PREFIX] [--width W] [--depth D]
-                       [--per-speed V_HAT] [--linear]
+                       [--center X] [--per-speed V_HAT] [--linear | --both]
+                       [--decades N]
 
 FIELD defaults to dissipation_rate. The window is W wide (default: 4 times
 the extent of the surface region where FIELD exceeds 1e-3 of its maximum)
-and D deep (default W/4), centred on the indenter (x = 0), equal aspect,
+and D deep (default W/4), centred on x = X (default 0, the indenter's
+apex; 'trailing' or 'leading' for an end of the contact), equal aspect,
 in eps (x/R on the top axis when R_hat is known). With --per-speed V_HAT
 the field is divided by V_HAT: the steady dissipation rate density D then
 becomes the energy dissipated per unit volume per eps of sliding (in E0*,
 eps units), which compares speeds. Colour map 'magma' on a log scale
-(four decades below the largest value in the window) when the field is
-positive and spans more than two decades, unless --linear; a field of
-both signs (stresses) gets the diverging 'RdBu_r', centred on 0. The
-title names the field and the speed (V_HAT from --per-speed, or the .pvd
-time of a steady_KKKKK.pvtu, or row KK of steady_state.csv next to it);
-the caption the run's parameters from that steady_state.csv. PREFIX
-defaults to FILE without .pvtu + '_' + FIELD; PREFIX.png is printed. The
-fields are read by viscoslide.vtu (standard library only, also used by
-the tests)."""
+(N decades below the largest value in the window, default 4, stated on
+the colour bar; white contours at each decade) when the field is
+positive and spans more than two decades, unless --linear (contours at
+a fifth, two fifths ... of the largest value); --both draws the log and
+the linear map one above the other. A field of both signs (stresses)
+gets the diverging 'RdBu_r', centred on 0. The contact's ends (gap below
+1.2 eps in surface_profile_steady_KK.csv beside a steady_KKKKK.pvtu) are
+marked on the surface. The title names the field and the speed (V_HAT
+from --per-speed, or the .pvd time of a steady_KKKKK.pvtu, or row KK of
+steady_state.csv next to it); the caption the run's parameters from that
+steady_state.csv. PREFIX defaults to FILE without .pvtu + '_' + FIELD;
+PREFIX.png is printed. The fields are read by viscoslide.vtu (standard
+library only, also used by the tests)."""
 import argparse
 import os
 import re
+import sys
 
 from . import style, tables, vtu
 from .style import fmt
@@ -97,6 +104,20 @@ def caption(row):
     return ', '.join(parts)
 
 
+def contact_ends(pvtu, R):
+    """x (in eps) of the contact's trailing and leading ends, from the
+    surface profile beside a steady_KKKKK.pvtu, or None."""
+    m = re.match(r'steady_(\d+)\.pvtu$', os.path.basename(pvtu))
+    if not m or not R:
+        return None
+    path = os.path.join(os.path.dirname(pvtu) or '.',
+                        f'surface_profile_steady_{int(m.group(1)):02d}.csv')
+    if not os.path.exists(path):
+        return None
+    inside = [p['x_over_R'] * R for p in tables.read(path) if p['gap_over_eps'] < 1.2]
+    return (min(inside), max(inside)) if inside else None
+
+
 def main():
     plt = style.pyplot(style.FIELDS, 'scripts/plot_field')
     import matplotlib.tri as mtri
@@ -112,11 +133,27 @@ def main():
     ap.add_argument('--depth', type=float)
     ap.add_argument('--per-speed', type=float)
     ap.add_argument('--linear', action='store_true')
+    ap.add_argument('--both', action='store_true')
+    ap.add_argument('--decades', type=float, default=4)
+    ap.add_argument('--center', default='0')
     a = ap.parse_args()
     prefix = a.prefix or os.path.splitext(a.pvtu)[0] + '_' + a.field
 
     x, y, v, tris = vtu.read_pvtu(a.pvtu, a.field)
     x, y, v = np.array(x), np.array(y), np.array(v, dtype=float)
+    row = run_row(a.pvtu)
+    R = None
+    try:
+        R = float(row['R_hat']) if row else None
+    except (KeyError, ValueError):
+        pass
+    ends = contact_ends(a.pvtu, R)
+    if a.center in ('trailing', 'leading'):
+        if not ends:
+            sys.exit(f'scripts/plot_field: --center {a.center}: no contact profile beside {a.pvtu}')
+        center = ends[0] if a.center == 'trailing' else ends[1]
+    else:
+        center = float(a.center)
     if a.per_speed:
         v = v / a.per_speed
     top, vmax = y.max(), np.abs(v).max()
@@ -125,22 +162,15 @@ def main():
     extent = (surface.max() - surface.min()) if surface.size else (x.max() - x.min()) / 10
     width = a.width or 4 * extent
     depth = a.depth or width / 4
-    seen = (np.abs(x) <= width / 2) & (y >= top - depth)
+    seen = (np.abs(x - center) <= width / 2) & (y >= top - depth)
     shown = v[seen] if seen.any() else v
     hi = np.abs(shown).max() or 1.
     signed = shown.min() < -1e-6 * hi and shown.max() > 1e-6 * hi
     positive = shown[shown > 0]
-    log = (not a.linear and not signed and positive.size and
-           hi / positive.min() > 100)
-    if signed:
-        cmap, norm, vals = 'RdBu_r', Normalize(-hi, hi), v
-    elif log:
-        lo = hi * 1e-4
-        cmap, norm, vals = 'magma', LogNorm(vmin=lo, vmax=hi), np.maximum(v, lo * 1e-2)
-    else:
-        cmap, norm, vals = 'magma', Normalize(min(0., shown.min()), shown.max()), v
+    can_log = not signed and positive.size and hi / positive.min() > 100
+    scales = (['log', 'linear'] if a.both and can_log else
+              ['signed'] if signed else ['log'] if can_log and not a.linear else ['linear'])
 
-    row = run_row(a.pvtu)
     V = a.per_speed or pvd_speed(a.pvtu)
     if V is None and row and re.match(r'steady_\d+\.pvtu$', os.path.basename(a.pvtu)):
         V = float(row['V_hat'])
@@ -154,24 +184,51 @@ def main():
         title += r', $\hat V = %s$' % fmt(V)
 
     tri = mtri.Triangulation(x, y, tris)
-    fig, ax = plt.subplots(figsize=(6.4, 2.9), layout='constrained')
-    pc = ax.tripcolor(tri, vals, shading='gouraud', cmap=cmap, norm=norm, rasterized=True)
-    ax.set_xlim(-width / 2, width / 2)
-    ax.set_ylim(top - depth, top)
-    ax.set_aspect('equal')
-    ax.set_xlabel(r'$x/\varepsilon$ (indenter apex at 0, sliding towards $+x$)')
-    ax.set_ylabel(r'$y/\varepsilon$')
-    R = None
-    try:
-        R = float(row['R_hat']) if row else None
-    except (KeyError, ValueError):
-        pass
+    # Each panel as tall as its window's aspect wants, plus its labels.
+    panel = 0.9 + 5.0 * min(depth / width, 0.5)
+    fig, axes = plt.subplots(len(scales), 1, figsize=(6.4, 0.6 + panel * len(scales)),
+                             layout='constrained', squeeze=False)
+    for ax, scale in zip(axes[:, 0], scales):
+        if scale == 'signed':
+            cmap, norm, vals, levels = 'RdBu_r', Normalize(-hi, hi), v, None
+            label = symbol
+        elif scale == 'log':
+            lo = hi * 10 ** -a.decades
+            cmap, norm = 'magma', LogNorm(vmin=lo, vmax=hi)
+            vals = np.maximum(v, lo * 1e-2)
+            levels = [10 ** e for e in range(int(np.ceil(np.log10(lo))),
+                                             int(np.floor(np.log10(hi))) + 1)]
+            label = symbol + f' (log; lowest: {a.decades:g} decades below the peak)'
+        else:
+            cmap, norm, vals = 'magma', Normalize(min(0., shown.min()), shown.max()), v
+            levels = [shown.max() * f for f in (0.2, 0.4, 0.6, 0.8)]
+            label = symbol + (' (linear)' if len(scales) > 1 else '')
+        pc = ax.tripcolor(tri, vals, shading='gouraud', cmap=cmap, norm=norm, rasterized=True)
+        if levels:
+            ax.tricontour(tri, vals, levels=levels, colors='w', linewidths=0.4, alpha=0.8)
+        ax.axhline(top, color='0.5', lw=0.8)
+        if ends:
+            ax.plot(ends, [top, top], 'v', color='c', ms=5, clip_on=False, zorder=5,
+                    label='contact ends (gap < 1.2 $\\varepsilon$)')
+            ax.legend(loc='lower right', fontsize=7, framealpha=0.6)
+        ax.set_xlim(center - width / 2, center + width / 2)
+        ax.set_ylim(top - depth, top)
+        ax.set_aspect('equal')
+        ax.set_ylabel(r'$y/\varepsilon$')
+        fig.colorbar(pc, ax=ax, label=label if len(label) < 40 else symbol, shrink=0.9,
+                     aspect=15, pad=0.02)
+        if scale == 'log':
+            ax.text(0.01, 0.03, f'contours: decades; floor {10 ** -a.decades:g} of the peak',
+                    transform=ax.transAxes, fontsize=7, color='w')
+        elif len(scales) > 1:
+            ax.text(0.01, 0.03, 'linear; contours at 0.2, 0.4, 0.6, 0.8 of the peak',
+                    transform=ax.transAxes, fontsize=7, color='w')
+    axes[-1, 0].set_xlabel(r'$x/\varepsilon$ (indenter apex at 0, sliding towards $+x$)')
     if R:
-        sec = ax.secondary_xaxis('top', functions=(lambda u: u / R, lambda u: u * R))
+        sec = axes[0, 0].secondary_xaxis('top', functions=(lambda u: u / R, lambda u: u * R))
         sec.set_xlabel(r'$x/R$', fontsize=9)
         sec.tick_params(labelsize=8)
-    fig.colorbar(pc, ax=ax, label=symbol, shrink=0.9, aspect=15, pad=0.02)
-    ax.set_title(title, fontsize=11)
+    axes[0, 0].set_title(title, fontsize=11)
     cap = caption(row)
     if cap:
         fig.suptitle(cap, fontsize=9, color='0.15')

@@ -3,8 +3,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/data_postprocessor.h>
 
+#include <viscoslide/field_recovery.h>
 #include <viscoslide/steady_state/solver.h>
 #include <viscoslide/steady_state/viscous_strain.h>
 #include <viscoslide/surface_fields.h>
@@ -13,69 +13,39 @@
 
 namespace viscoslide
 {
-  namespace
+  void
+  SteadyStateSolver::quadrature_fields(
+    const FEValues<dim>              &fe_values,
+    std::vector<std::vector<double>> &fields) const
   {
-    // Stress and dissipation density from u and eps_v, for DataOut. They
-    // use eps(u), not its projection: exact for degree 2.
-    class SteadyFields : public DataPostprocessor<2>
-    {
-    public:
-      explicit SteadyFields(const ViscoelasticSolid &material)
-        : material(material)
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n_q = quadrature.size();
+    std::vector<SymmetricTensor<2, dim>> strain(n_q), projected_strain(n_q);
+    std::vector<Vector<double>> values(n_q, Vector<double>(fe.n_components()));
+    fe_values[displacement].get_function_symmetric_gradients(solution, strain);
+    fe_values.get_function_values(solution, values);
+    ViscousStrain::project(ViscousStrain::projection(fe_values, strain_basis),
+                           strain,
+                           projected_strain);
+    for (unsigned int q = 0; q < n_q; ++q)
       {
-      }
-
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<2> &inputs,
-        std::vector<Vector<double>>              &computed) const override
-      {
-        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+        ArmStress h;
+        double    rate = 0.;
+        for (unsigned int a = 0; a < material.n_arms(); ++a)
           {
-            const auto &v = inputs.solution_values[q];
-            const auto &g = inputs.solution_gradients[q];
-            const auto  strain =
-              ViscousStrain::tensor(g[0][0],
-                                    g[1][1],
-                                    0.5 * (g[0][1] + g[1][0]));
-            ArmStress h;
-            double    rate = 0.;
-            for (unsigned int k = 0; k < material.n_arms(); ++k)
-              {
-                const auto h_k =
-                  material.arm_stress(k, strain - ViscousStrain::of_arm(v, k));
-                h += h_k;
-                rate += material.dissipation_rate(k, h_k);
-              }
-            const auto sigma = material.stress(strain, h);
-            computed[q](0)   = sigma[0][0];
-            computed[q](1)   = sigma[1][1];
-            computed[q](2)   = sigma[0][1];
-            computed[q](3)   = material.stress_zz(strain, h);
-            computed[q](4)   = rate;
+            const auto h_a = material.arm_stress(
+              a, projected_strain[q] - ViscousStrain::of_arm(values[q], a));
+            h += h_a;
+            rate += material.dissipation_rate(a, h_a);
           }
+        const auto sigma = material.stress(strain[q], h);
+        fields[0][q]     = rate;
+        fields[1][q]     = sigma[0][0];
+        fields[2][q]     = sigma[1][1];
+        fields[3][q]     = sigma[0][1];
+        fields[4][q]     = material.stress_zz(strain[q], h);
       }
-
-      std::vector<std::string>
-      get_names() const override
-      {
-        return {"stress_xx",
-                "stress_yy",
-                "stress_xy",
-                "stress_zz",
-                "dissipation_rate"};
-      }
-
-      UpdateFlags
-      get_needed_update_flags() const override
-      {
-        return update_values | update_gradients;
-      }
-
-    private:
-      const ViscoelasticSolid &material;
-    };
-  } // namespace
+  }
 
 
   double
@@ -83,32 +53,16 @@ namespace viscoslide
   {
     FEValues<dim> fe_values(
       fe, quadrature, update_values | update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size()),
-      projected_strain(quadrature.size());
-    std::vector<Vector<double>> values(quadrature.size(),
-                                       Vector<double>(fe.n_components()));
-    double                      rate = 0.;
+    std::vector<std::vector<double>> fields(
+      n_quadrature_fields, std::vector<double>(quadrature.size()));
+    double rate = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                   strain);
-          fe_values.get_function_values(solution, values);
-          ViscousStrain::project(ViscousStrain::projection(fe_values,
-                                                           strain_basis),
-                                 strain,
-                                 projected_strain);
+          quadrature_fields(fe_values, fields);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
-            for (unsigned int a = 0; a < material.n_arms(); ++a)
-              rate +=
-                material.dissipation_rate(
-                  a,
-                  material.arm_stress(a,
-                                      projected_strain[q] -
-                                        ViscousStrain::of_arm(values[q], a))) *
-                fe_values.JxW(q);
+            rate += fields[0][q] * fe_values.JxW(q);
         }
     return dealii::Utilities::MPI::sum(rate, mpi_communicator);
   }
@@ -143,14 +97,33 @@ namespace viscoslide
                      DataComponentInterpretation::component_is_scalar);
     interpretation[0] = interpretation[1] =
       DataComponentInterpretation::component_is_part_of_vector;
-    const SteadyFields fields(material);
-    DataOut<dim>       data_out;
+    DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(solution,
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
-    data_out.add_data_vector(solution, fields);
+    // The stress and the dissipation density of the equations (the arms
+    // see Pi eps(u); eps(u) itself would add the arm stress of the strain
+    // that the viscous strain's degree cannot hold, several times the
+    // dissipation), recovered onto a continuous field.
+    const FieldRecovery<dim> recovery(triangulation);
+    FEValues<dim>            fe_values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
+    const auto recovered = recovery.recover(
+      quadrature,
+      n_quadrature_fields,
+      [&](const auto &cell, std::vector<std::vector<double>> &values) {
+        fe_values.reinit(typename DoFHandler<dim>::active_cell_iterator(
+          &triangulation, cell->level(), cell->index(), &dof_handler));
+        quadrature_fields(fe_values, values);
+      });
+    const std::array<std::string, n_quadrature_fields> names_of{
+      {"dissipation_rate", "stress_xx", "stress_yy", "stress_xy", "stress_zz"}};
+    for (unsigned int k = 0; k < n_quadrature_fields; ++k)
+      data_out.add_data_vector(recovery.dof_handler(),
+                               recovered[k],
+                               names_of[k]);
     data_out.build_patches(2);
     writer.write(data_out, "steady", counter, V_hat);
     write_surface_fields(writer,

@@ -116,6 +116,13 @@ namespace viscoslide
     // integral of D over the block [output.cc]
     double
     dissipation_rate() const override;
+    // At the quadrature points of the cell where fe_values stands: the
+    // dissipation density D, then stress xx, yy, xy and zz, from the
+    // equations' strains (the arms see Pi eps(u)). [output.cc]
+    static constexpr unsigned int n_quadrature_fields = 5;
+    void
+    quadrature_fields(const FEValues<dim>              &fe_values,
+                      std::vector<std::vector<double>> &fields) const;
     // Newton iterations of the last converged speed (re-solves after mesh
     // adaptation included).
     unsigned int

@@ -282,10 +282,14 @@ namespace viscoslide
     record_step(Phase phase);
     void
     write_fields();
-    // The stress components xx, yy, xy, zz and the dissipation rate at the
-    // quadrature points, as fields of the history's discontinuous space.
-    std::vector<TrilinosWrappers::MPI::Vector>
-    quadrature_fields();
+    // At the quadrature points of `cell` (fe_values reinit there, with
+    // gradients): the stress components xx, yy, xy, zz, the dissipation
+    // rate and the energy dissipated so far per unit volume.
+    static constexpr unsigned int n_quadrature_fields = 6;
+    void
+    quadrature_fields(const FEValues<dim>                         &fe_values,
+                      const DoFHandler<dim>::active_cell_iterator &cell,
+                      std::vector<std::vector<double>> &fields) const;
     void
     write_profile(const std::string &filename);
 

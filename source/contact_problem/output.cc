@@ -5,6 +5,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <viscoslide/contact_problem.h>
+#include <viscoslide/field_recovery.h>
 #include <viscoslide/surface_fields.h>
 
 #include <array>
@@ -181,77 +182,50 @@ namespace viscoslide
   }
 
 
-  namespace
+  void
+  ContactProblem::quadrature_fields(
+    const FEValues<dim>                         &fe_values,
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<std::vector<double>>            &fields) const
   {
-    // The fields at the quadrature points, in the order of
-    // ContactProblem::quadrature_fields().
-    enum
-    {
-      s_xx,
-      s_yy,
-      s_xy,
-      s_zz,
-      D,
-      n_fields
-    };
-  } // namespace
-
-
-  std::vector<TrilinosWrappers::MPI::Vector>
-  ContactProblem::quadrature_fields()
-  {
-    std::vector<TrilinosWrappers::MPI::Vector> fields(n_fields);
-    for (auto &f : fields)
-      f.reinit(history_dof_handler.locally_owned_dofs(), mpi_communicator);
-
-    FEValues<dim> fe_values(fe, quadrature, update_gradients);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
     std::vector<types::global_dof_index> history_dofs(
       history_fe.n_dofs_per_cell());
     std::vector<double> values;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                   strain);
-          read_cell_history(cell, values, history_dofs);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              ArmStress h;
-              double    rate = 0.;
-              for (unsigned int k = 0; k < material.n_arms(); ++k)
-                {
-                  const ArmStress h_k = arm_stress_at(values, k, q);
-                  h += h_k;
-                  rate += material.dissipation_rate(k, h_k);
-                }
-              const auto sigma = material.stress(strain[q], h);
-              const auto i     = history_dofs[quadrature_to_history_dof[q]];
-              fields[s_xx](i)  = sigma[0][0];
-              fields[s_yy](i)  = sigma[1][1];
-              fields[s_xy](i)  = sigma[0][1];
-              fields[s_zz](i)  = material.stress_zz(strain[q], h);
-              fields[D](i)     = rate;
-            }
-        }
-    for (auto &f : fields)
-      f.compress(VectorOperation::insert);
-    return fields;
+    fe_values[displacement].get_function_symmetric_gradients(solution, strain);
+    read_cell_history(cell, values, history_dofs);
+    const unsigned int n_q = quadrature.size();
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        ArmStress h;
+        double    rate = 0.;
+        for (unsigned int k = 0; k < material.n_arms(); ++k)
+          {
+            const ArmStress h_k = arm_stress_at(values, k, q);
+            h += h_k;
+            rate += material.dissipation_rate(k, h_k);
+          }
+        const auto sigma = material.stress(strain[q], h);
+        fields[0][q]     = sigma[0][0];
+        fields[1][q]     = sigma[1][1];
+        fields[2][q]     = sigma[0][1];
+        fields[3][q]     = material.stress_zz(strain[q], h);
+        fields[4][q]     = rate;
+        fields[5][q]     = values[dissipated_energy() * n_q + q];
+      }
   }
 
 
-  // Volume fields (displacement, stress from the quadrature points,
-  // dissipation rate and accumulated dissipated energy, MPI subdomain,
-  // refinement level) and surface fields (pressure, gap).
+  // Volume fields (displacement, the stress, the dissipation rate and the
+  // accumulated dissipated energy from the quadrature points, recovered
+  // onto a continuous field, MPI subdomain, refinement level) and surface
+  // fields (pressure, gap).
   void
   ContactProblem::write_fields()
   {
     TimerOutput::Scope t(timer, "output");
-    const auto         fields = quadrature_fields();
-
-    Vector<float> subdomain(triangulation.n_active_cells()),
+    Vector<float>      subdomain(triangulation.n_active_cells()),
       level(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -268,20 +242,32 @@ namespace viscoslide
       std::vector<std::string>(dim, "displacement"),
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_part_of_vector));
-    const char *names[n_fields] = {
-      "stress_xx", "stress_yy", "stress_xy", "stress_zz", "dissipation_rate"};
-    for (unsigned int f = 0; f < n_fields; ++f)
-      data_out.add_data_vector(history_dof_handler, fields[f], names[f]);
-    data_out.add_data_vector(history_dof_handler,
-                             history[dissipated_energy()],
-                             "dissipated_energy");
-    // The paper's Fig. 5 shows it in units of dgamma/L (L the present
-    // contact length); zero while there is no contact.
-    TrilinosWrappers::MPI::Vector energy_hat(history[dissipated_energy()]);
-    energy_hat *= last_quantities.contact_length / scales.dgamma;
-    data_out.add_data_vector(history_dof_handler,
-                             energy_hat,
-                             "dissipated_energy_hat");
+    const FieldRecovery<dim> recovery(triangulation);
+    FEValues<dim>            fe_values(fe, quadrature, update_gradients);
+    auto                     fields = recovery.recover(
+      quadrature,
+      n_quadrature_fields,
+      [&](const auto &tria_cell, std::vector<std::vector<double>> &values) {
+        const DoFHandler<dim>::active_cell_iterator cell(&triangulation,
+                                                         tria_cell->level(),
+                                                         tria_cell->index(),
+                                                         &dof_handler);
+        fe_values.reinit(cell);
+        quadrature_fields(fe_values, cell, values);
+      });
+    // The paper's Fig. 5 shows the dissipated energy in units of dgamma/L
+    // (L the present contact length); zero while there is no contact.
+    fields.push_back(fields[n_quadrature_fields - 1]);
+    fields.back() *= last_quantities.contact_length / scales.dgamma;
+    const char *names[] = {"stress_xx",
+                           "stress_yy",
+                           "stress_xy",
+                           "stress_zz",
+                           "dissipation_rate",
+                           "dissipated_energy",
+                           "dissipated_energy_hat"};
+    for (unsigned int f = 0; f < fields.size(); ++f)
+      data_out.add_data_vector(recovery.dof_handler(), fields[f], names[f]);
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.add_data_vector(level, "level");
     data_out.build_patches(2);

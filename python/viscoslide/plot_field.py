@@ -19,7 +19,8 @@ the colour bar; white contours at each decade) when the field is
 positive and spans more than two decades, unless --linear (contours at
 a fifth, two fifths ... of the largest value); --both draws the log and
 the linear map one above the other. A field of both signs (stresses)
-gets the diverging 'RdBu_r', centred on 0. The contact's ends (gap below
+gets the diverging 'RdBu_r', centred on 0, with black contours at
++-0.2, 0.4, 0.6, 0.8 of its largest magnitude. The contact's ends (gap below
 1.2 eps in surface_profile_steady_KK.csv beside a steady_KKKKK.pvtu) are
 marked on the surface. The title names the field and the speed (V_HAT
 from --per-speed, or the .pvd time of a steady_KKKKK.pvtu, or row KK of
@@ -190,7 +191,8 @@ def main():
                              layout='constrained', squeeze=False)
     for ax, scale in zip(axes[:, 0], scales):
         if scale == 'signed':
-            cmap, norm, vals, levels = 'RdBu_r', Normalize(-hi, hi), v, None
+            cmap, norm, vals = 'RdBu_r', Normalize(-hi, hi), v
+            levels = [hi * f for f in (-0.8, -0.6, -0.4, -0.2, 0.2, 0.4, 0.6, 0.8)]
             label = symbol
         elif scale == 'log':
             lo = hi * 10 ** -a.decades
@@ -205,7 +207,8 @@ def main():
             label = symbol + (' (linear)' if len(scales) > 1 else '')
         pc = ax.tripcolor(tri, vals, shading='gouraud', cmap=cmap, norm=norm, rasterized=True)
         if levels:
-            ax.tricontour(tri, vals, levels=levels, colors='w', linewidths=0.4, alpha=0.8)
+            ax.tricontour(tri, vals, levels=levels, colors='k' if scale == 'signed' else 'w',
+                          linewidths=0.4, alpha=0.8)
         ax.axhline(top, color='0.5', lw=0.8)
         if ends:
             ax.plot(ends, [top, top], 'v', color='c', ms=5, clip_on=False, zorder=5,

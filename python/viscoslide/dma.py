@@ -111,8 +111,8 @@ def pair_shift(fixed, moving):
     E' overlap, each sweep is read at those levels by interpolation (E'
     rises with f); where it does not (on the glassy plateau E' changes by
     a few percent per decade and neighbouring sweeps miss each other),
-    each is extended across the gap by the slope of its three points
-    nearest to it."""
+    each is extended across the gap by the slope of a line fitted to the
+    whole sweep."""
     import numpy as np
     sweeps = []
     for c in (fixed, moving):
@@ -146,6 +146,7 @@ def pair_shift(fixed, moving):
 def shift_factors(isotherms, T_ref=None):
     """{set: log10 aT} (aT multiplies the frequency onto the reference
     temperature's curve), and T_ref in K (default the median sweep's)."""
+    import numpy as np
     order = sorted(isotherms, key=lambda k: isotherms[k][0])
     if len(order) < 2:
         raise DmaError('a master curve needs isotherms at two temperatures at least; '
@@ -162,7 +163,7 @@ def shift_factors(isotherms, T_ref=None):
     # linear interpolation is subtracted.
     T = [isotherms[k][0] for k in order]
     a = [log_a[k] for k in order]
-    offset = float(__import__('numpy').interp(T_ref, T, a))
+    offset = float(np.interp(T_ref, T, a))
     return {k: v - offset for k, v in log_a.items()}, T_ref
 
 

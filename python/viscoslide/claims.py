@@ -204,10 +204,8 @@ def dissipation_shares(folder, k, R_hat):
     trail, lead = (min(inside), max(inside)) if inside else (0., 0.)
     top = max(y)
     total = near = behind = under = 0.
-    for a, b, c in tris:
-        area = abs((x[b] - x[a]) * (y[c] - y[a]) - (x[c] - x[a]) * (y[b] - y[a])) / 2
-        w = area * (v[a] + v[b] + v[c]) / 3
-        xm, depth = (x[a] + x[b] + x[c]) / 3, top - (y[a] + y[b] + y[c]) / 3
+    for w, xm, ym in vtu.triangle_integrals(x, y, v, tris):
+        depth = top - ym
         total += w
         if depth < SURFACE_LAYER:
             near += w

@@ -230,18 +230,20 @@ def dissipation_study(work):
                 for k, v in enumerate(values)))
 
 
+# The studies without a reference curve.
+OWN = {'sphere': sphere_study, 'dissipation': dissipation_study}
+
+
 def main(argv):
     prepare()
-    names = (list(STUDIES) + ['sphere', 'dissipation'] if not argv or argv[0] == 'all'
-             else argv)
-    unknown = [n for n in names if n not in STUDIES and n not in ('sphere', 'dissipation')]
+    names = list(STUDIES) + list(OWN) if not argv or argv[0] == 'all' else argv
+    unknown = [n for n in names if n not in STUDIES and n not in OWN]
     if unknown:
         sys.exit(f'convergence: unknown study {unknown[0]!r}; choose from '
-                 f'{", ".join(STUDIES)}, sphere, dissipation or all')
+                 f'{", ".join(list(STUDIES) + list(OWN))} or all')
     work = tempfile.mkdtemp(prefix='viscoslide-convergence-')
     for name in names:
-        {'sphere': sphere_study, 'dissipation': dissipation_study}.get(
-            name, lambda w: study(name, w))(work)
+        OWN[name](work) if name in OWN else study(name, work)
     print(f'outputs and logs in {work}')
 
 

@@ -63,9 +63,9 @@ def read(path, poisson=0.5):
         raise DmaError(f'{path}: a header, a units line and data are needed')
     names = [n.strip() for n in lines[0].split(',')]
     units = [u.strip() for u in lines[1].split(',')]
-    kind = 'E' if 'E_stor' in names else 'G' if 'G_stor' in names else None
-    needed = ['f', f'{kind}_stor', f'{kind}_loss', 'T', 'Set'] if kind else ['E_stor']
-    for n in needed + ([] if kind else ['E_loss']):
+    kind = 'G' if 'G_stor' in names and 'E_stor' not in names else 'E'
+    needed = ['f', f'{kind}_stor', f'{kind}_loss', 'T', 'Set']
+    for n in needed:
         if n not in names:
             raise DmaError(f'{path}: no column {n} (columns: {", ".join(names)})')
     if len(units) != len(names):

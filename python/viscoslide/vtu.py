@@ -73,3 +73,12 @@ def read_pvtu(pvtu, field):
                 tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
             start = end
     return x, y, v, tris
+
+
+def triangle_integrals(x, y, v, tris):
+    """Per written triangle: its integral of the field (area times the mean
+    of its corners' values, exact for the field linear on it) and its
+    centroid (x, y); what the checks sum over regions."""
+    for a, b, c in tris:
+        area = abs((x[b] - x[a]) * (y[c] - y[a]) - (x[c] - x[a]) * (y[b] - y[a])) / 2
+        yield area * (v[a] + v[b] + v[c]) / 3, (x[a] + x[b] + x[c]) / 3, (y[a] + y[b] + y[c]) / 3

@@ -9,10 +9,10 @@
 namespace viscoslide
 {
   template <int dim>
-  FieldRecovery<dim>::FieldRecovery(
-    const parallel::distributed::Triangulation<dim> &triangulation)
-    : fe(1)
-    , dofs(triangulation)
+  FieldRecovery<dim>::FieldRecovery(const DoFHandler<dim> &solver_dofs)
+    : solver_dofs(solver_dofs)
+    , fe(1)
+    , dofs(solver_dofs.get_triangulation())
   {
     dofs.distribute_dofs(fe);
     owned = dofs.locally_owned_dofs();
@@ -44,7 +44,11 @@ namespace viscoslide
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          values(cell, v);
+          values(Cell(&dofs.get_triangulation(),
+                      cell->level(),
+                      cell->index(),
+                      &solver_dofs),
+                 v);
           for (auto &l : local)
             l = 0.;
           for (unsigned int q = 0; q < quadrature.size(); ++q)

@@ -12,8 +12,6 @@
 
 #include <deal.II/base/quadrature.h>
 
-#include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -32,14 +30,14 @@ namespace viscoslide
   class FieldRecovery
   {
   public:
-    using Cell = typename Triangulation<dim>::active_cell_iterator;
+    using Cell = typename DoFHandler<dim>::active_cell_iterator;
     // values(cell, v) sets v[k][q], field k at quadrature point q of a
-    // locally owned cell.
+    // locally owned cell of the solver's DoFHandler.
     using CellValues =
       std::function<void(const Cell &, std::vector<std::vector<double>> &)>;
 
-    explicit FieldRecovery(
-      const parallel::distributed::Triangulation<dim> &triangulation);
+    // On the triangulation of `solver_dofs`, whose cells values() gets.
+    explicit FieldRecovery(const DoFHandler<dim> &solver_dofs);
 
     // The n_fields fields, ghosted, on dof_handler().
     std::vector<TrilinosWrappers::MPI::Vector>
@@ -54,6 +52,7 @@ namespace viscoslide
     }
 
   private:
+    const DoFHandler<dim>    &solver_dofs;
     const FE_Q<dim>           fe;
     DoFHandler<dim>           dofs;
     IndexSet                  owned, relevant;

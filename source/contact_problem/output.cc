@@ -242,19 +242,16 @@ namespace viscoslide
       std::vector<std::string>(dim, "displacement"),
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_part_of_vector));
-    const FieldRecovery<dim> recovery(triangulation);
+    const FieldRecovery<dim> recovery(dof_handler);
     FEValues<dim>            fe_values(fe, quadrature, update_gradients);
-    auto                     fields = recovery.recover(
-      quadrature,
-      n_quadrature_fields,
-      [&](const auto &tria_cell, std::vector<std::vector<double>> &values) {
-        const DoFHandler<dim>::active_cell_iterator cell(&triangulation,
-                                                         tria_cell->level(),
-                                                         tria_cell->index(),
-                                                         &dof_handler);
-        fe_values.reinit(cell);
-        quadrature_fields(fe_values, cell, values);
-      });
+    auto                     fields =
+      recovery.recover(quadrature,
+                       n_quadrature_fields,
+                       [&](const auto                       &cell,
+                           std::vector<std::vector<double>> &values) {
+                         fe_values.reinit(cell);
+                         quadrature_fields(fe_values, cell, values);
+                       });
     // The paper's Fig. 5 shows the dissipated energy in units of dgamma/L
     // (L the present contact length); zero while there is no contact.
     fields.push_back(fields[n_quadrature_fields - 1]);

@@ -107,17 +107,17 @@ namespace viscoslide
     // see Pi eps(u); eps(u) itself would add the arm stress of the strain
     // that the viscous strain's degree cannot hold, several times the
     // dissipation), recovered onto a continuous field.
-    const FieldRecovery<dim> recovery(triangulation);
+    const FieldRecovery<dim> recovery(dof_handler);
     FEValues<dim>            fe_values(
       fe, quadrature, update_values | update_gradients | update_JxW_values);
-    const auto recovered = recovery.recover(
-      quadrature,
-      n_quadrature_fields,
-      [&](const auto &cell, std::vector<std::vector<double>> &values) {
-        fe_values.reinit(typename DoFHandler<dim>::active_cell_iterator(
-          &triangulation, cell->level(), cell->index(), &dof_handler));
-        quadrature_fields(fe_values, values);
-      });
+    const auto recovered =
+      recovery.recover(quadrature,
+                       n_quadrature_fields,
+                       [&](const auto                       &cell,
+                           std::vector<std::vector<double>> &values) {
+                         fe_values.reinit(cell);
+                         quadrature_fields(fe_values, values);
+                       });
     const std::array<std::string, n_quadrature_fields> names_of{
       {"dissipation_rate", "stress_xx", "stress_yy", "stress_xy", "stress_zz"}};
     for (unsigned int k = 0; k < n_quadrature_fields; ++k)

@@ -338,13 +338,13 @@ def plot(prefix, T, la, T_ref, C1, C2, Ea, omega, storage, loss, E_relaxed, E, t
     fig, ax = plt.subplots(figsize=style.SIZE, layout='constrained')
     Tc = np.array(T) - 273.15
     Tf = np.linspace(min(T), max(T), 200)
-    ax.plot(Tc, la, 'o', label='measured (overlap of neighbouring isotherms)')
+    ax.plot(Tc, la, 'o', label='from the data (neighbouring isotherms)')
     ax.plot(Tf - 273.15, -C1 * (Tf - T_ref) / (C2 + Tf - T_ref), '-',
             label=f'WLF: $C_1$ = {C1:.3g}, $C_2$ = {C2:.3g} K')
     ax.plot(Tf - 273.15, Ea / (R_GAS * math.log(10)) * (1 / Tf - 1 / T_ref), '--',
             label=f'Arrhenius: $E_a$ = {Ea / 1e3:.3g} kJ/mol')
     ax.set_xlabel('T (°C)')
-    ax.set_ylabel(r'$\log_{10} a_T$')
+    ax.set_ylabel(r'$\log_{10} a_T$ (to $T_{ref} = %g$ °C)' % (T_ref - 273.15))
     ax.legend()
     style.save(fig, prefix + '_shift')
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -35,12 +36,39 @@ namespace viscoslide
     }
   } // namespace
 
+  namespace
+  {
+    // The derived columns of `columns` (see CsvTable::Derived): their names
+    // after the declared ones in `header`, their sources and factors.
+    std::vector<std::pair<std::size_t, double>>
+    locate_derived(const std::vector<std::string>       &columns,
+                   const std::vector<CsvTable::Derived> &derived,
+                   std::vector<std::string>             &header)
+    {
+      header = columns;
+      std::vector<std::pair<std::size_t, double>> sources;
+      for (const auto &d : derived)
+        {
+          const auto from = std::find(columns.begin(), columns.end(), d.from);
+          if (from == columns.end())
+            continue;
+          header.push_back(d.name);
+          sources.emplace_back(from - columns.begin(), d.factor);
+        }
+      return sources;
+    }
+  } // namespace
+
+
   CsvTable::CsvTable(const std::string              &filename,
                      const std::vector<std::string> &columns,
                      const std::string              &comment,
-                     MPI_Comm                        comm)
+                     MPI_Comm                        comm,
+                     const std::vector<Derived>     &derived_columns)
     : columns(columns)
   {
+    std::vector<std::string> header;
+    derived = locate_derived(columns, derived_columns, header);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     file = std::make_unique<std::ofstream>(filename);
@@ -49,8 +77,8 @@ namespace viscoslide
                                         "' for writing");
     if (!comment.empty())
       *file << "# " << comment << '\n';
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      *file << (i ? "," : "") << columns[i];
+    for (std::size_t i = 0; i < header.size(); ++i)
+      *file << (i ? "," : "") << header[i];
     *file << std::endl;
   }
 
@@ -75,6 +103,15 @@ namespace viscoslide
       return;
     for (std::size_t i = 0; i < row.size(); ++i)
       *file << (i ? "," : "") << row[i].second;
+    // A derived value of a cell that is not a number (a label) is empty.
+    for (const auto &[from, factor] : derived)
+      {
+        char        *end   = nullptr;
+        const auto  &cell  = row[from].second;
+        const double value = std::strtod(cell.c_str(), &end);
+        *file << ','
+              << (cell.empty() || *end != '\0' ? "" : format(value * factor));
+      }
     *file << std::endl;
     if (!*file)
       throw std::runtime_error("writing a row of a CSV file failed (disk "
@@ -110,10 +147,13 @@ namespace viscoslide
   CsvTable::CsvTable(const std::string              &filename,
                      const std::vector<std::string> &columns,
                      const std::size_t               keep_rows,
-                     MPI_Comm                        comm)
+                     MPI_Comm                        comm,
+                     const std::vector<Derived>     &derived_columns)
     : columns(columns)
     , rows(keep_rows)
   {
+    std::vector<std::string> header;
+    derived = locate_derived(columns, derived_columns, header);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     std::ifstream in(filename);

@@ -19,6 +19,7 @@ namespace viscoslide
       Solver::declare(prm);
       BoundaryElement::declare(prm);
       Sweep::declare(prm);
+      Units::declare(prm);
     }
 
     void
@@ -35,7 +36,9 @@ namespace viscoslide
       solver.parse(prm);
       boundary_element.parse(prm);
       sweep.parse(prm);
+      units.parse(prm);
       solver.verbose = output.verbosity == Verbosity::verbose;
+      apply_units(*this);
       CaseSetup::check_consistency(*this);
       CaseSetup::fit_block_to_wake(*this);
       CaseSetup::check_mesh_can_hold_case(*this);

@@ -238,7 +238,8 @@ namespace viscoslide
     CsvTable table(path,
                    {"x_over_R", "gap_over_eps", "p_hat", "u_y_over_eps"},
                    comment,
-                   comm);
+                   comm,
+                   scales.si_columns);
     for (const auto &p : points)
       table.add_row({{"x_over_R", CsvTable::format(p.x / scales.R)},
                      {"gap_over_eps", CsvTable::format(p.gap / scales.eps)},

@@ -22,6 +22,7 @@ namespace viscoslide
                 ? 1.
                 : p.material.E0_over_Einf)
     , tau_ref(1.)
+    , si_columns(p.units.si_columns(p.geometry.dimension))
   {
   }
 

@@ -24,14 +24,16 @@ namespace viscoslide
                                                 "newton_iterations",
                                                 "n_dofs"};
       const std::string              path    = writer.path("continuation.csv");
+      const auto si = prm.units.si_columns(prm.geometry.dimension);
       if (start.next_station > 0)
-        return CsvTable(path, columns, start.continuation_rows, comm);
+        return CsvTable(path, columns, start.continuation_rows, comm, si);
       return CsvTable(path,
                       columns,
                       version_string() + "; time unit: " +
                         Parameters::to_string(prm.material.time_constant) +
                         " time",
-                      comm);
+                      comm,
+                      si);
     }
 
     // The last converged state, so that a failure reports it and not the

@@ -26,7 +26,8 @@ namespace viscoslide
       table = std::make_unique<CsvTable>(filename,
                                          columns(prm.geometry.dimension),
                                          keep_rows,
-                                         comm);
+                                         comm,
+                                         scales.si_columns);
   }
 
 
@@ -87,7 +88,8 @@ namespace viscoslide
       table = std::make_unique<CsvTable>(filename,
                                          columns(scales.dimension),
                                          version_string(),
-                                         comm);
+                                         comm,
+                                         scales.si_columns);
     CsvTable::Row row = {
       {"control", Parameters::to_string(prm.sliding.control)},
       {"mu_T", F::format(prm.adhesion.tabor_parameter)},

@@ -107,6 +107,9 @@ namespace viscoslide
         add(sw.shapes, "", [](const std::string &v) {
           return std::vector<Setting>{{"Indenter", "Shape", v}};
         });
+        add(words(sw.temperatures), "T", [](const std::string &v) {
+          return std::vector<Setting>{{"Units", "Temperature", v}};
+        });
         if (p.sliding.solver == Parameters::SlidingSolver::transient &&
             p.sliding.speeds.size() > 1)
           add(words(p.sliding.speeds), "V", [](const std::string &v) {

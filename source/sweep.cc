@@ -69,6 +69,14 @@ namespace viscoslide
         "Comma-separated shapes; each replaces Indenter/Shape (the other "
         "Indenter entries apply to the shape that uses them). Case folders "
         "are named by the shape with '-' for spaces.");
+      prm.declare_entry("Temperatures",
+                        "",
+                        list,
+                        "Comma-separated temperatures in degrees Celsius; "
+                        "each replaces Units/Temperature, whose Shift law "
+                        "moves the material's times (friction against "
+                        "speed at several temperatures, or against "
+                        "temperature at one speed).");
       prm.leave_subsection();
     }
 
@@ -112,7 +120,8 @@ namespace viscoslide
       choices("Controls", controls);
       choices("Solvers", solvers);
       spring_stiffnesses = numbers("Spring stiffnesses", true);
-      shapes = Utilities::split_string_list(prm.get("Indenter shapes"));
+      shapes       = Utilities::split_string_list(prm.get("Indenter shapes"));
+      temperatures = numbers("Temperatures", false);
       prm.leave_subsection();
       require(approaches.empty() || loads.empty(),
               "'Sweep/Approaches' and 'Sweep/Loads' are both given: a "

@@ -68,17 +68,28 @@ namespace viscoslide
     // (column, value) in the order of the columns.
     using Row = std::vector<std::pair<std::string, std::string>>;
 
+    // A column written after the declared ones: the value of column
+    // `from` times `factor` (the same quantity in SI units, units.h).
+    struct Derived
+    {
+      std::string from, name;
+      double      factor;
+    };
+
+    // `derived` columns whose `from` is not a column are left out.
     CsvTable(const std::string              &filename,
              const std::vector<std::string> &columns,
              const std::string              &comment,
-             MPI_Comm                        comm);
+             MPI_Comm                        comm,
+             const std::vector<Derived>     &derived = {});
 
     // Reopens a table written by the constructor above, keeping its first
     // `keep_rows` rows (those of a checkpoint) and appending after them.
     CsvTable(const std::string              &filename,
              const std::vector<std::string> &columns,
              std::size_t                     keep_rows,
-             MPI_Comm                        comm);
+             MPI_Comm                        comm,
+             const std::vector<Derived>     &derived = {});
 
     void
     add_row(const Row &row);
@@ -102,7 +113,9 @@ namespace viscoslide
   private:
     std::unique_ptr<std::ofstream> file;
     std::vector<std::string>       columns;
-    std::size_t                    rows = 0;
+    // The derived columns: the position of their source column, the factor.
+    std::vector<std::pair<std::size_t, double>> derived;
+    std::size_t                                 rows = 0;
   };
 
 

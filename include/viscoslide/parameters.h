@@ -2,9 +2,10 @@
 // per section of the parameter file, each declared and parsed beside the
 // class it configures (output.h, material.h, interaction_law.h,
 // indenter.h, mesh.h, loading.h, newton.h, boundary_element/grid.h,
-// sweep.h). Every quantity a user types is dimensionless, in the units of
-// ../doc/conventions.md: lengths in eps, times in the chosen time constant
-// tau, stresses in E0* (see scales.h).
+// sweep.h, units.h). Every quantity a user types is dimensionless, in the
+// units of ../doc/conventions.md (lengths in eps, times in the chosen time
+// constant tau, stresses in E0*, see scales.h), unless the Units section
+// gives the case in SI units, which parse() converts once.
 #ifndef viscoslide_parameters_h
 #define viscoslide_parameters_h
 
@@ -19,6 +20,7 @@
 #include <viscoslide/output.h>
 #include <viscoslide/scales.h>
 #include <viscoslide/sweep.h>
+#include <viscoslide/units.h>
 
 #include <string>
 #include <vector>
@@ -43,6 +45,7 @@ namespace viscoslide
       Solver          solver;
       BoundaryElement boundary_element;
       Sweep           sweep;
+      Units           units;
 
       // What the program changed in the case or doubts about it, said
       // once when the case starts (for example the block widened to hold

@@ -6,6 +6,9 @@
 #define viscoslide_scales_h
 
 #include <viscoslide/material.h>
+#include <viscoslide/output.h>
+
+#include <vector>
 
 namespace viscoslide
 {
@@ -33,6 +36,9 @@ namespace viscoslide
     int    dimension; // of the problem, 2 or 3
     double tau_arm;   // relaxation time of the Maxwell arm
     double tau_ref;   // the time unit of V_hat and time_over_tau (= 1)
+    // The SI columns every table adds in a case given in SI units (units.h;
+    // none in a dimensionless case).
+    std::vector<CsvTable::Derived> si_columns;
   };
 
   // The name of the contact's measure in the tables: L_hat = L/R in 2D,

@@ -24,6 +24,7 @@ namespace viscoslide
       std::vector<SlidingSolver> solvers;
       std::vector<double>        spring_stiffnesses;
       std::vector<std::string>   shapes;
+      std::vector<double>        temperatures;
 
       static void
       declare(ParameterHandler &prm);

@@ -694,7 +694,8 @@ namespace viscoslide
                         "n_dofs"},
                    version_string() +
                      "; forces per unit length in (pi dgamma^2 E0* R)^(1/3)",
-                   comm);
+                   comm,
+                   scales.si_columns);
     unsigned int step    = 0;
     auto         add_row = [&](const std::string &phase) {
       const auto &q = last_quantities;

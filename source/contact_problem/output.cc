@@ -77,13 +77,15 @@ namespace viscoslide
       return std::make_unique<CsvTable>(writer.path(name),
                                         columns,
                                         keep_rows,
-                                        mpi_communicator);
+                                        mpi_communicator,
+                                        scales.si_columns);
     return std::make_unique<CsvTable>(
       writer.path(name),
       columns,
       version_string() + "; time unit: " +
         Parameters::to_string(prm.material.time_constant) + " time" + units,
-      mpi_communicator);
+      mpi_communicator,
+      scales.si_columns);
   }
 
 

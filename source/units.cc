@@ -318,10 +318,12 @@ namespace viscoslide
         double Einf = u.instantaneous_modulus;
         if (spectrum)
           {
+            // The weights share out Einf - E0 (Material): Einf is that of
+            // the arms the case keeps.
+            E0   = trim_spectrum(p);
             Einf = E0;
             for (const auto &term : series)
               Einf += term.weight;
-            E0 = trim_spectrum(p);
           }
         require(Einf >= E0,
                 entry("Units", "Instantaneous modulus", Einf) +

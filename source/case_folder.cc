@@ -4,6 +4,7 @@
 #include <viscoslide/output.h>
 #include <viscoslide/steady_state_table.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -151,8 +152,16 @@ namespace viscoslide
     void
     write_sweep_table(const fs::path &directory, const std::vector<Case> &cases)
     {
-      const auto columns = SteadyStateTable::columns(
-        cases.empty() ? 2 : cases.front().parameters.geometry.dimension);
+      const int dimension =
+        cases.empty() ? 2 : cases.front().parameters.geometry.dimension;
+      auto columns = SteadyStateTable::columns(dimension);
+      // The SI columns the cases' tables add after these (units.h).
+      if (!cases.empty())
+        for (const auto &d :
+             cases.front().parameters.units.si_columns(dimension))
+          if (std::find(columns.begin(), columns.end(), d.from) !=
+              columns.end())
+            columns.push_back(d.name);
       std::ostringstream out;
       out << "# " << version_string() << "; sweep of " << cases.size()
           << " cases, one folder each\ncase,status,reason";

@@ -17,6 +17,10 @@ each is written once and every script and test check imports it.
     plot          scripts/plot: mu, L_hat, forces, profiles against V_hat
     plot_field    scripts/plot_field: one field of a .pvtu near the contact
     units         scripts/units: SI to parameter entries, results to SI
+    dma           scripts/dma: a DMA measurement to master curve, shift
+                  laws and Prony series
+    plot_temperatures  scripts/plot_temperatures: mu of a temperature
+                  sweep in SI units against speed and temperature
     compare       scripts/compare_curves: two steady_state.csv row by row
     bench         scripts/bench, bench_sliding, bench_curve,
                   bench_steady_curve: benchmark runs and their tables

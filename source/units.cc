@@ -146,7 +146,8 @@ namespace viscoslide
             std::pair{"Reference temperature", reference_temperature}})
         require(value > -zero_celsius && std::isfinite(value),
                 entry("Units", name, value) +
-                  " lies below absolute zero (degrees Celsius)");
+                  " must be a finite temperature above absolute zero "
+                  "(degrees Celsius)");
       require(shift_law != ShiftLaw::arrhenius || activation_energy > 0,
               entry("Units", "Activation energy", activation_energy) +
                 " must be positive for the Arrhenius shift law");

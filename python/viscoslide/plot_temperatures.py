@@ -9,8 +9,10 @@ the SI columns and parameters.prm, whose Units/Temperature labels the
 case. Several directories (say one over speeds at three temperatures and
 one over temperatures at one speed) are pooled.
 
+Caption (top line): R/eps, the load and the solver of the first case.
+
   PREFIX_speed        mu against V (m/s), one curve per temperature
-                      (coolwarm from cold to hot); open symbols: not steady.
+                      (plasma, dark cold to bright hot); open symbols: not steady.
   PREFIX_temperature  mu against the temperature, one curve per speed
                       (viridis), where a speed was run at three or more
                       temperatures.
@@ -60,21 +62,30 @@ def main():
         for T, rows in cases(d):
             by_temperature[T] += rows
     temperatures = sorted(by_temperature)
-    cmap = plt.get_cmap('coolwarm')
-    colour = {T: cmap(i / max(len(temperatures) - 1, 1)) for i, T in enumerate(temperatures)}
+    first = by_temperature[temperatures[0]][0]
+    load = first.get('F_n_N', first.get('F_n_N_per_m'))
+    unit = 'N' if 'F_n_N' in first else 'N/m'
+    caption = (f"$R/\\varepsilon = {style.fmt(first['R_hat'])}$, "
+               f"$F_n = {style.fmt(load)}$ {unit}, {first['solver'].replace('-', ' ')}s")
+    cmap = plt.get_cmap('plasma')  # dark cold to bright hot, never white
+    colour = {T: cmap(0.9 * i / max(len(temperatures) - 1, 1))
+              for i, T in enumerate(temperatures)}
     any_open = any(not tables.steady(r) for rows in by_temperature.values() for r in rows)
 
     fig, ax = plt.subplots(figsize=style.SIZE)
     for T in temperatures:
         rows = sorted(by_temperature[T], key=lambda r: r['V_m_per_s'])
         ax.plot([r['V_m_per_s'] for r in rows], [r['mu'] for r in rows], '-',
-                color=colour[T], label=f'{style.fmt(T)} °C')
+                color=colour[T], label=f'${style.fmt(T)}$ °C')
         for r in rows:
             marker(ax, r['V_m_per_s'], r['mu'], r, colour[T])
     ax.set_xscale('log')
     ax.set_xlabel('sliding speed $V$ (m/s)')
     ax.set_ylabel(r'friction coefficient $\mu = |F_t/F_n|$')
-    ax.legend(title='open: not steady' if any_open else None)
+    ax.legend(title='open: not steady' if any_open else None,
+              loc='upper left', bbox_to_anchor=(1.02, 1), borderaxespad=0)
+    ax.set_title(caption, fontsize=9)
+    fig.tight_layout()
     style.save(fig, prefix + '_speed')
 
     by_speed = defaultdict(list)
@@ -90,11 +101,12 @@ def main():
         c = cmap(i / max(len(speeds) - 1, 1))
         points = sorted(by_speed[V], key=lambda p: p[0])
         ax.plot([T for T, _ in points], [r['mu'] for _, r in points], '-', color=c,
-                label=f'{style.fmt(V)} m/s')
+                label=f'${style.fmt(V)}$ m/s')
         for T, r in points:
             marker(ax, T, r['mu'], r, c)
     ax.set_xlabel('temperature (°C)')
     ax.set_ylabel(r'friction coefficient $\mu = |F_t/F_n|$')
+    ax.set_title(caption, fontsize=9)
     ax.legend(title='open: not steady' if any_open else None)
     style.save(fig, prefix + '_temperature')
 

@@ -486,6 +486,39 @@ namespace viscoslide
   }
 
 
+  ApproachProgress::ApproachProgress(const double delta_start,
+                                     const double delta_final,
+                                     const double increment,
+                                     const double target_force)
+    : delta_start(delta_start)
+    , delta_final(delta_final)
+    , increment(std::abs(increment))
+    , target_force(target_force)
+  {
+  }
+
+
+  std::string
+  ApproachProgress::report(const double delta, const double F)
+  {
+    ++steps;
+    const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    double       steps_left = std::abs(delta_final - delta) / increment;
+    const double rise       = F - last_force;
+    if (!std::isnan(target_force) && rise > 0)
+      steps_left = std::min(steps_left, std::max(0., target_force - F) / rise);
+    last_force = F;
+    std::ostringstream s;
+    s << "approach " << std::fixed << std::setprecision(0)
+      << 100. * steps / (steps + steps_left) << " %, "
+      << format_duration(elapsed) << " elapsed, ~"
+      << format_duration(elapsed / steps * steps_left) << " left";
+    return s.str();
+  }
+
+
   void
   write_atomically(const std::string &path, const std::string &text)
   {

@@ -352,7 +352,8 @@ namespace viscoslide
     SurfaceQuantities         last_quantities{};
     double                    last_dissipation_rate = 0.;
 
-    Progress *progress;
+    Progress        *progress;
+    ApproachProgress approach_progress;
 
     // The transient sliding phase: where it started, the contact length
     // after the approach, how far it may go and over which window steady

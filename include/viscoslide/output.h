@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -216,6 +217,33 @@ namespace viscoslide
     std::string                           name;
     double                                done_before = 0;
     std::chrono::steady_clock::time_point start;
+  };
+
+
+  // How far an approach is and what it may still take, for its step lines.
+  // It ends at delta_final, or where F_n passes a target load: the steps
+  // left are then extrapolated from the last step's rise of F_n (else
+  // counted in increments to delta_final), and their time from the mean
+  // step so far. E.g. "approach 40 %, 12 s elapsed, ~18 s left".
+  class ApproachProgress
+  {
+  public:
+    // Lengths in any one unit; target_force NaN: none.
+    ApproachProgress(double delta_start,
+                     double delta_final,
+                     double increment,
+                     double target_force);
+
+    // After a converged step at delta with normal force F.
+    std::string
+    report(double delta, double F);
+
+  private:
+    double       delta_start, delta_final, increment, target_force;
+    double       last_force = std::numeric_limits<double>::quiet_NaN();
+    unsigned int steps      = 0;
+    std::chrono::steady_clock::time_point start =
+      std::chrono::steady_clock::now();
   };
 
 

@@ -711,13 +711,20 @@ namespace viscoslide
          {"n_dofs", std::to_string(n_unknowns())}});
     };
     add_row("start");
-    auto report = [&] {
+    ApproachProgress progress(prm.loading.initial_approach,
+                              prm.loading.final_approach,
+                              prm.loading.increment,
+                              prm.loading.target_load);
+    auto             report = [&] {
       add_row("approach");
       pcout << "Approach delta_hat = " << approach() / scales.eps
             << ": F_n_hat = " << last_quantities.normal_force / scales.force
             << ", " << contact_column(dim) << " = "
             << last_quantities.contact_length / scales.contact << " ("
-            << last_newton_iterations << " Newton iterations)" << std::endl;
+            << last_newton_iterations << " Newton iterations)  ["
+            << progress.report(approach() / scales.eps,
+                               last_quantities.normal_force / scales.force)
+            << "]" << std::endl;
       done =
         prm.loading.has_target_load() &&
         last_quantities.minimum_gap < prm.adhesion.contact_gap * scales.eps &&

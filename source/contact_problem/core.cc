@@ -46,6 +46,10 @@ namespace viscoslide
     , writer(parts.writer)
     , steady_state_table(parts.steady_state_table)
     , progress(parts.progress)
+    , approach_progress(prm.loading.initial_approach,
+                        prm.loading.final_approach,
+                        prm.loading.increment,
+                        prm.loading.target_load)
   {
     // The history field's nodes are the Gauss points of the cell
     // quadrature; find which node is which point once.

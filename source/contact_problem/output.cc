@@ -153,7 +153,12 @@ namespace viscoslide
     const double slid = committed.s - slide_plan.s0;
     if (phase == Phase::slide)
       pcout << "  s " << slid << "/" << slide_plan.distance << " eps";
-    if (progress != nullptr)
+    if (phase == Phase::approach)
+      pcout << "  ["
+            << approach_progress.report(committed.delta / scales.eps,
+                                        sq.normal_force / scales.force)
+            << "]";
+    else if (progress != nullptr)
       pcout << "  ["
             << progress->report(
                  phase == Phase::slide ? slid / slide_plan.distance : 0.)

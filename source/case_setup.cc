@@ -287,6 +287,30 @@ namespace viscoslide
                 !p.loading.retract || p.sliding.speed == 0,
               "'Loading/Retract' = true needs 'Sliding/Solver' = transient: "
               "the steady-state solver has no time to retract in");
+      // A program's segments: each at least one sliding step long, and
+      // the indenter kept within the block.
+      double s = 0.;
+      for (unsigned int k = 0; k < p.sliding.program.size(); ++k)
+        {
+          const auto       &segment = p.sliding.program[k];
+          const std::string where   = "'Sliding/Program' segment " +
+                                    std::to_string(k + 1) + " ('" +
+                                    segment.text + "')";
+          const double step = p.sliding.increment * p.mesh.finest_cell;
+          require(segment.rest() || segment.length >= step,
+                  where + " slides " + num(segment.length) +
+                    " eps, less than one sliding step ('Sliding/Sliding "
+                    "increment' x 'Mesh/Finest surface cell' = " +
+                    num(step) + " eps)");
+          if (!segment.rest())
+            s += segment.length * (segment.speed > 0 ? 1. : -1.);
+          require(std::abs(s) < p.geometry.domain_width / 2,
+                  where + " takes the indenter " + num(s) +
+                    " eps from the block's centre, beyond its lateral "
+                    "boundary ('Geometry/Domain width' = " +
+                    num(p.geometry.domain_width) +
+                    "): widen the block or shorten the program");
+        }
       require(p.sliding.speeds.size() == 1 ||
                 std::find(p.sweep.solvers.begin(),
                           p.sweep.solvers.end(),

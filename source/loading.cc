@@ -234,8 +234,69 @@ namespace viscoslide
         "load in steady_state.csv, after the speeds' rows. Follows a "
         "branch, e.g. a sliding contact unloaded towards pull-off. Empty: "
         "none.");
+      prm.declare_entry(
+        "Program",
+        "",
+        Patterns::Anything(),
+        "Transient solver: a sliding program instead of sliding to the "
+        "steady state, as segments separated by ';', each 'slide V for D' "
+        "(V_hat, negative to slide back towards -x, over D eps) or 'rest "
+        "for T' (the indenter held for T tau, under the control of "
+        "Sliding/Control): e.g. 'slide 1 for 400; rest for 100; slide 1 "
+        "for 400' (a start, a stop and a restart after a dwell) or 'slide "
+        "1 for 200; slide -1 for 200' with Program repeats = 5 (five "
+        "reciprocating strokes). history.csv gets a row per step; no row "
+        "in steady_state.csv. Empty: slide at the Sliding speed to the "
+        "steady state.");
+      prm.declare_entry("Program repeats",
+                        "1",
+                        Patterns::Integer(),
+                        "How many times the Program runs in a row.");
       prm.leave_subsection();
     }
+
+    namespace
+    {
+      // 'Sliding/Program' as segments, each checked; the message names
+      // the segment.
+      std::vector<ProgramSegment>
+      parse_program(const std::string &text, const int repeats)
+      {
+        std::vector<ProgramSegment> program;
+        if (text.empty())
+          return program;
+        require(repeats >= 1,
+                entry("Sliding", "Program repeats", repeats) +
+                  " must be at least 1");
+        const auto segments = Utilities::split_string_list(text, ';');
+        for (unsigned int k = 0; k < segments.size(); ++k)
+          {
+            const std::string where = "'Sliding/Program' segment " +
+                                      std::to_string(k + 1) + " ('" +
+                                      segments[k] + "')";
+            const auto words = Utilities::split_string_list(segments[k], ' ');
+            const bool slide =
+              words.size() == 4 && words[0] == "slide" && words[2] == "for";
+            const bool rest =
+              words.size() == 3 && words[0] == "rest" && words[1] == "for";
+            require(slide || rest,
+                    where + ": a segment is 'slide V for D' or 'rest for T'");
+            const double speed  = slide ? to_number(words[1]) : 0.;
+            const double length = to_number(words.back());
+            require(std::isfinite(speed) && (rest || speed != 0),
+                    where + ": the speed must be a finite number other than "
+                            "0 (a stop is 'rest for T')");
+            require(std::isfinite(length) && length > 0,
+                    where + ": the " + (slide ? "distance" : "time") +
+                      " must be positive");
+            program.push_back({speed, length, segments[k]});
+          }
+        const auto once = program;
+        for (int r = 1; r < repeats; ++r)
+          program.insert(program.end(), once.begin(), once.end());
+        return program;
+      }
+    } // namespace
 
     void
     Sliding::parse(ParameterHandler &prm)
@@ -270,7 +331,14 @@ namespace viscoslide
                     "' is not a finite number");
           load_path.push_back(value);
         }
+      program =
+        parse_program(prm.get("Program"), prm.get_integer("Program repeats"));
       prm.leave_subsection();
+      require(program.empty() || (solver == SlidingSolver::transient &&
+                                  speeds.size() == 1 && speed == 0),
+              "'Sliding/Program' needs 'Sliding/Solver' = transient and "
+              "leaves 'Sliding/Sliding speed' at 0: the program gives the "
+              "speeds");
       require(load_path.empty() || solver == SlidingSolver::steady_state,
               "'Sliding/Load path' needs 'Sliding/Solver' = steady-state "
               "(the transient solver holds the load of the approach)");

@@ -76,6 +76,9 @@ namespace viscoslide
 
     double Fn = 0, Ft = 0, Fh = 0, L = 0, F_abs = 0,
            g_min = std::numeric_limits<double>::max();
+    // The contact set's ends, from the crossings of the threshold.
+    double x_trail = std::numeric_limits<double>::max(),
+           x_lead  = -std::numeric_limits<double>::max();
     for_each_top_face(dofs, top, [&](const auto &cell, const unsigned int f) {
       gauss_values.reinit(cell, f);
       gauss_values[uy].get_function_values(u, u_y);
@@ -115,17 +118,25 @@ namespace viscoslide
               // crossing
               const double t = (contact_gap - g0) / (g1 - g0);
               L += (in0 ? t : 1. - t) * (x1 - x0);
+              x_trail = std::min(x_trail, x0 + t * (x1 - x0));
+              x_lead  = std::max(x_lead, x0 + t * (x1 - x0));
             }
         }
     });
 
-    const MPI_Comm comm = dofs.get_communicator();
-    return {Utilities::MPI::sum(Fn, comm),
-            Utilities::MPI::sum(Fh, comm),
-            Utilities::MPI::sum(Ft, comm),
-            Utilities::MPI::sum(L, comm),
-            Utilities::MPI::sum(F_abs, comm),
-            Utilities::MPI::min(g_min, comm)};
+    const MPI_Comm    comm = dofs.get_communicator();
+    SurfaceQuantities q{Utilities::MPI::sum(Fn, comm),
+                        Utilities::MPI::sum(Fh, comm),
+                        Utilities::MPI::sum(Ft, comm),
+                        Utilities::MPI::sum(L, comm),
+                        Utilities::MPI::sum(F_abs, comm),
+                        Utilities::MPI::min(g_min, comm)};
+    // Relative to the apex; without contact both at the apex.
+    x_trail   = Utilities::MPI::min(x_trail, comm);
+    x_lead    = Utilities::MPI::max(x_lead, comm);
+    q.x_trail = x_lead >= x_trail ? x_trail - s : 0.;
+    q.x_lead  = x_lead >= x_trail ? x_lead - s : 0.;
+    return q;
   }
 
 

@@ -244,6 +244,18 @@ namespace viscoslide
 
     void
     slide(bool resumed = false);
+    // The Sliding/Program instead of slide(): its segments in turn, a
+    // checkpoint after each (with Output/Checkpoint every > 0), from the
+    // segment and the part of it a resumed run's checkpoint holds.
+    // [sliding.cc]
+    void
+    run_program(bool resumed = false);
+    // The next step of a segment, `done` of it behind: a slide's step of
+    // Sliding increment finest cells, or a rest's time step, growing
+    // geometrically from a slide step's time so that the relaxation
+    // right after the stop is resolved. Cut to the segment's end.
+    LoadState
+    program_step(const Parameters::ProgramSegment &segment, double done) const;
     // Sets slide_plan from the state after the approach.
     void
     plan_slide();
@@ -354,6 +366,11 @@ namespace viscoslide
 
     Progress        *progress;
     ApproachProgress approach_progress;
+    // The program's segment under way and how much of it (eps or tau) is
+    // done; the speed of the step being recorded (V_hat).
+    unsigned int program_segment = 0;
+    double       segment_done    = 0.;
+    double       step_speed      = 0.;
 
     // The transient sliding phase: where it started, the contact length
     // after the approach, how far it may go and over which window steady
@@ -407,6 +424,7 @@ namespace viscoslide
       ar &step_number &history_rows &approach_rows &committed;
       ar &last_increment_delta &last_increment_s   &coupling;
       ar &slide_plan                               &samples;
+      ar &program_segment                          &segment_done;
     }
   };
 } // namespace viscoslide

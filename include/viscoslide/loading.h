@@ -8,6 +8,7 @@
 #include <viscoslide/input.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace viscoslide
@@ -60,6 +61,23 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
 
+    // One segment of a sliding program: the indenter slides at a signed
+    // speed (V_hat; negative: back towards -x) over a distance (eps), or
+    // rests (speed 0) for a time (tau).
+    struct ProgramSegment
+    {
+      double speed;
+      double length;
+      // As the parameter file says it, for messages and the log.
+      std::string text;
+
+      bool
+      rest() const
+      {
+        return speed == 0.;
+      }
+    };
+
     struct Sliding
     {
       std::vector<double> speeds; // V_hat, in the order of continuation
@@ -76,6 +94,9 @@ namespace viscoslide
       // F_hat (force control) or delta_hat (displacement control) values
       // followed at the last speed by the steady-state solver.
       std::vector<double> load_path;
+      // The transient solver's sliding program, its repeats unrolled;
+      // empty: slide at `speed` to the steady state.
+      std::vector<ProgramSegment> program;
 
       static void
       declare(ParameterHandler &prm);

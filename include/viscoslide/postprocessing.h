@@ -35,8 +35,9 @@ namespace viscoslide
     double contact_length; // measure of {g < contact gap threshold}
     double absolute_force; // integral of |p|, the residual scale
     double minimum_gap;
-    // The contact set's extent (boundary elements): its trailing and
-    // leading x, and in 3D its half-width across the track.
+    // The contact set's extent relative to the apex: its smallest and
+    // largest x (the trailing and leading edge when sliding towards +x),
+    // and in 3D its half-width across the track (boundary elements).
     double x_trail = 0, x_lead = 0, y_half = 0;
   };
 

@@ -17,7 +17,7 @@ namespace viscoslide
   namespace
   {
     // The version raised whenever the serialized scalars change.
-    const Checkpoint::Format format{"transient", 3};
+    const Checkpoint::Format format{"transient", 4};
   } // namespace
 
 

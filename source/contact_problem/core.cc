@@ -325,7 +325,9 @@ namespace viscoslide
       }
     else
       approach();
-    if (prm.sliding.speed > 0)
+    if (!prm.sliding.program.empty())
+      run_program(resume);
+    else if (prm.sliding.speed > 0)
       slide(resume);
     if (prm.loading.retract)
       ramp(Phase::retract, prm.loading.retract_to);

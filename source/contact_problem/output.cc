@@ -29,6 +29,7 @@ namespace viscoslide
                                                     "n_dofs",
                                                     "n_cells"};
     const std::vector<std::string> history_columns{"time_over_tau",
+                                                   "V_hat",
                                                    "s_over_eps",
                                                    "delta_hat",
                                                    "F_n_hat",
@@ -37,6 +38,8 @@ namespace viscoslide
                                                    "mu",
                                                    "mu_contact_set",
                                                    "L_hat",
+                                                   "x_trail_over_R",
+                                                   "x_lead_over_R",
                                                    "dissipation_rate_hat",
                                                    "mu_energy",
                                                    "newton_iterations",
@@ -104,11 +107,12 @@ namespace viscoslide
     if (phase == Phase::slide)
       {
         ++history_rows;
-        const double V = prm.sliding.speed * scales.eps / scales.tau_ref;
+        const double V = std::abs(step_speed) * scales.eps / scales.tau_ref;
         const double rate =
           last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
         history_table->add_row(
           {{"time_over_tau", F::format(committed.time / scales.tau_ref)},
+           {"V_hat", F::format(step_speed)},
            {"s_over_eps", F::format(committed.s / scales.eps)},
            {"delta_hat", F::format(committed.delta / scales.eps)},
            {"F_n_hat", F::format(sq.normal_force / scales.force)},
@@ -120,6 +124,8 @@ namespace viscoslide
             F::format(
               std::abs(sq.contact_set_tangential_force / sq.normal_force))},
            {"L_hat", F::format(sq.contact_length / scales.R)},
+           {"x_trail_over_R", F::format(sq.x_trail / scales.R)},
+           {"x_lead_over_R", F::format(sq.x_lead / scales.R)},
            {"dissipation_rate_hat", F::format(rate)},
            {"mu_energy",
             F::format(std::abs(last_dissipation_rate / V / sq.normal_force))},
@@ -150,19 +156,30 @@ namespace viscoslide
           << "  L_hat " << std::setw(11) << sq.contact_length / scales.R
           << "  Newton " << last_newton_iterations << "  dofs "
           << dof_handler.n_dofs() << (last_step_relaxed ? "  (jump)" : "");
-    const double slid = committed.s - slide_plan.s0;
-    if (phase == Phase::slide)
-      pcout << "  s " << slid << "/" << slide_plan.distance << " eps";
+    // How far the sliding phase is: its distance, or the program's
+    // segments.
+    const auto  &program = prm.sliding.program;
+    const double slid    = committed.s - slide_plan.s0;
+    double       done    = 0.;
+    if (phase == Phase::slide && program.empty())
+      {
+        pcout << "  s " << slid << "/" << slide_plan.distance << " eps";
+        done = slid / slide_plan.distance;
+      }
+    else if (phase == Phase::slide && program_segment < program.size())
+      {
+        pcout << "  segment " << program_segment + 1 << "/" << program.size();
+        done =
+          (program_segment + segment_done / program[program_segment].length) /
+          program.size();
+      }
     if (phase == Phase::approach)
       pcout << "  ["
             << approach_progress.report(committed.delta / scales.eps,
                                         sq.normal_force / scales.force)
             << "]";
     else if (progress != nullptr)
-      pcout << "  ["
-            << progress->report(
-                 phase == Phase::slide ? slid / slide_plan.distance : 0.)
-            << "]";
+      pcout << "  [" << progress->report(done) << "]";
     pcout << std::endl;
 
     if (prm.output.profile_every > 0 &&

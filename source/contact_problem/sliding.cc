@@ -158,6 +158,7 @@ namespace viscoslide
           << plan.distance << " eps in steps of " << ds << " eps, steady over "
           << plan.window << " eps" << std::endl;
 
+    step_speed                    = prm.sliding.speed;
     bool         steady           = false;
     unsigned int checkpointed_row = history_rows;
     while (committed.s - plan.s0 < plan.distance - 1e-9 * ds && !steady)
@@ -195,6 +196,105 @@ namespace viscoslide
     write_profile("surface_profile_steady.csv");
     pcout << (steady ? "Steady state" : "NO steady state") << " after "
           << committed.s - plan.s0 << " eps" << std::endl;
+    coupling.hold_approach();
+  }
+
+
+  LoadState
+  ContactProblem::program_step(const Parameters::ProgramSegment &segment,
+                               const double                      done) const
+  {
+    const double ds     = prm.sliding.increment * prm.mesh.finest_cell;
+    const double left   = segment.length - done;
+    LoadState    target = committed;
+    if (segment.rest())
+      {
+        // The slide step's time at the fastest speed of the program, then
+        // half the rest so far: a few dozen steps per decade of time.
+        double fastest = 0.;
+        for (const auto &other : prm.sliding.program)
+          fastest = std::max(fastest, std::abs(other.speed));
+        target.dt = std::min(left, std::max(ds / fastest, 0.5 * done));
+      }
+    else
+      {
+        const double step = std::min(ds, left);
+        target.s += (segment.speed > 0 ? step : -step) * scales.eps;
+        target.dt = step / std::abs(segment.speed) * scales.tau_ref;
+      }
+    target.time += target.dt;
+    return target;
+  }
+
+
+  void
+  ContactProblem::run_program(const bool resumed)
+  {
+    const auto &program = prm.sliding.program;
+    if (!resumed)
+      {
+        // The lateral boundaries two contact lengths away, as slide()
+        // asks, at the program's farthest excursion.
+        const double L0 =
+          std::max(last_quantities.contact_length, 10. * prm.mesh.finest_cell);
+        double s = committed.s;
+        for (unsigned int k = 0; k < program.size(); ++k)
+          {
+            if (!program[k].rest())
+              s +=
+                program[k].speed > 0 ? program[k].length : -program[k].length;
+            if (std::abs(s) + 2. * L0 > prm.geometry.domain_width / 2)
+              throw Parameters::ExcInvalidInput(
+                "'Sliding/Program' segment " + std::to_string(k + 1) + " ('" +
+                program[k].text + "') takes the contact, " +
+                std::to_string(L0) +
+                " eps long, within 2 L of the block's "
+                "lateral boundary; 'Geometry/Domain width' must be at least " +
+                std::to_string(2 * (std::abs(s) + 2 * L0)));
+          }
+        if (prm.sliding.control != Parameters::Control::displacement)
+          coupling.hold_force(last_quantities.normal_force,
+                              SurfaceCoupling::spring_stiffness_of(prm, scales),
+                              committed.delta);
+        program_segment = 0;
+        segment_done    = 0.;
+        history_rows    = 0;
+      }
+    open_history_table(resumed);
+    unsigned int checkpointed_row = history_rows;
+    while (program_segment < program.size())
+      {
+        const auto &segment = program[program_segment];
+        pcout << "Segment " << program_segment + 1 << "/" << program.size()
+              << ": " << segment.text << " under "
+              << Parameters::to_string(prm.sliding.control) << " control"
+              << (segment_done > 0 ? " (resumed part-way)" : "") << std::endl;
+        step_speed = segment.speed;
+        while (segment_done < segment.length * (1. - 1e-12))
+          {
+            const LoadState target = program_step(segment, segment_done);
+            const double    length =
+              segment.rest() ? target.dt / scales.tau_ref
+                                : std::abs(target.s - committed.s) / scales.eps;
+            if (!advance_to(target, Phase::slide))
+              abort_run(target);
+            segment_done += length;
+            if (prm.output.checkpoint_every > 0 &&
+                history_rows >= checkpointed_row + prm.output.checkpoint_every)
+              {
+                write_checkpoint();
+                checkpointed_row = history_rows;
+              }
+          }
+        ++program_segment;
+        segment_done = 0.;
+        if (prm.output.checkpoint_every > 0 && program_segment < program.size())
+          {
+            write_checkpoint();
+            checkpointed_row = history_rows;
+          }
+      }
+    write_profile("surface_profile_program_end.csv");
     coupling.hold_approach();
   }
 

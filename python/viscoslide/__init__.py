@@ -21,6 +21,8 @@ each is written once and every script and test check imports it.
                   laws and Prony series
     plot_temperatures  scripts/plot_temperatures: mu of a temperature
                   sweep in SI units against speed and temperature
+    plot_history  scripts/plot_history: a sliding program's history
+                  against time, and the F_t loop of its strokes
     compare       scripts/compare_curves: two steady_state.csv row by row
     bench         scripts/bench, bench_sliding, bench_curve,
                   bench_steady_curve: benchmark runs and their tables

@@ -13,7 +13,9 @@ OUTPUT_DIR holds the run's history.csv (and approach.csv).
   PREFIX_loop   F_t_hat against s/eps, one colour per cycle of the
                 program (viridis), where the indenter moves back and
                 forth: the loop of a reciprocating tribometer, whose area
-                is the energy dissipated per cycle.
+                (in the legend, F_hat eps) is the energy dissipated per
+                cycle; each cycle starts where the one before ended, the
+                first solid, the others dashed.
 
 PREFIX defaults to OUTPUT_DIR + '/history'."""
 import argparse
@@ -85,11 +87,18 @@ def main():
     cycles.append(current)
     cmap = plt.get_cmap('viridis')
     fig, ax = plt.subplots(figsize=style.SIZE)
+    last = None
     for k, cycle in enumerate(cycles):
-        points = [r for _, run in cycle for r in run]
+        # from where the cycle before ended, so that the loop closes
+        points = ([last] if last else []) + [r for _, run in cycle for r in run]
+        last = points[-1]
+        area = sum(0.5 * (a['F_t_hat'] + b['F_t_hat']) * (b['s_over_eps'] - a['s_over_eps'])
+                   for a, b in zip(points, points[1:]))
         ax.plot([r['s_over_eps'] for r in points], [r['F_t_hat'] for r in points],
-                '-', lw=1.2, color=cmap(0.9 * k / max(len(cycles) - 1, 1)),
-                label=f'cycle {k + 1}')
+                linestyle='-' if k == 0 else (0, (4, 2 + k)), lw=1.2,
+                color=cmap(0.9 * k / max(len(cycles) - 1, 1)),
+                label=rf'cycle {k + 1}, $\hat V$ = {style.fmt(abs(cycle[0][0]))}: '
+                      rf'$\oint \hat F_t\,ds$ = {area:.3g}')
     ax.axhline(0, color='0.6', lw=0.6)
     ax.set_xlabel(r'indenter position $s/\varepsilon$')
     ax.set_ylabel(r'$\hat F_t$ (x force on the indenter)')

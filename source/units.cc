@@ -49,7 +49,8 @@ namespace viscoslide
         Patterns::Selection(choice_pattern<UnitSystem>()),
         "'dimensionless': every entry in the reduced units of "
         "doc/conventions.md. 'SI': the material and the contact are given "
-        "below in SI units; Sliding/Sliding speed is then in m/s, "
+        "below in SI units; Sliding/Sliding speed and the speeds of "
+        "Sliding/Program are then in m/s, the Program's rests in s, "
         "Loading/Target load, Sweep/Loads and the loads of Sliding/Load "
         "path in N/m (2D, per unit length of the cylinder) or N (3D). "
         "Lengths of the block and the mesh, approaches and distances stay "
@@ -295,6 +296,11 @@ namespace viscoslide
         for (double &V : p.sliding.speeds)
           V *= u.time_constant / eps;
         p.sliding.speed = p.sliding.speeds.back();
+        for (auto &segment : p.sliding.program)
+          if (segment.rest())
+            segment.length /= u.time_constant; // s to tau
+          else
+            segment.speed *= u.time_constant / eps;
         require_default(p.material.E0_over_Einf == 0.1,
                         "Material/E0 over Einf",
                         "Relaxed modulus and Instantaneous modulus");

@@ -261,6 +261,10 @@ namespace viscoslide
         history_rows    = 0;
       }
     open_history_table(resumed);
+    if (resumed && progress != nullptr && program_segment < program.size())
+      progress->resume_case(
+        (program_segment + segment_done / program[program_segment].length) /
+        program.size());
     unsigned int checkpointed_row = history_rows;
     while (program_segment < program.size())
       {

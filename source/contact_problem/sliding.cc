@@ -210,7 +210,7 @@ namespace viscoslide
     if (segment.rest())
       {
         // The slide step's time at the fastest speed of the program, then
-        // half the rest so far: a few dozen steps per decade of time.
+        // half the rest so far: about six steps per decade of time.
         double fastest = 0.;
         for (const auto &other : prm.sliding.program)
           fastest = std::max(fastest, std::abs(other.speed));
@@ -247,10 +247,10 @@ namespace viscoslide
               throw Parameters::ExcInvalidInput(
                 "'Sliding/Program' segment " + std::to_string(k + 1) + " ('" +
                 program[k].text + "') takes the contact, " +
-                std::to_string(L0) +
+                Parameters::num(L0) +
                 " eps long, within 2 L of the block's "
                 "lateral boundary; 'Geometry/Domain width' must be at least " +
-                std::to_string(2 * (std::abs(s) + 2 * L0)));
+                Parameters::num(2 * (std::abs(s) + 2 * L0)));
           }
         if (prm.sliding.control != Parameters::Control::displacement)
           coupling.hold_force(last_quantities.normal_force,

@@ -79,7 +79,7 @@ def main():
         return
     # A cycle ends where the indenter turns forward again.
     cycles, current = [], []
-    for i, (V, run) in enumerate(runs):
+    for V, run in runs:
         if V > 0 and current and any(v < 0 for v, _ in current):
             cycles.append(current)
             current = []

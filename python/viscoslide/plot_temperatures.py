@@ -19,7 +19,6 @@ Caption (top line): R/eps, the load and the solver of the first case.
 
 PREFIX defaults to the first OUTPUT_DIR's path + '/friction'."""
 import argparse
-import math
 import os
 import sys
 from collections import defaultdict

@@ -34,10 +34,7 @@ namespace viscoslide
     {
       return ReferenceCells::get_hypercube<patch_dim>();
     }
-  } // namespace
 
-  namespace
-  {
     // The derived columns of `columns` (see CsvTable::Derived): their names
     // after the declared ones in `header`, their sources and factors.
     std::vector<std::pair<std::size_t, double>>
@@ -486,12 +483,10 @@ namespace viscoslide
   }
 
 
-  ApproachProgress::ApproachProgress(const double delta_start,
-                                     const double delta_final,
+  ApproachProgress::ApproachProgress(const double delta_final,
                                      const double increment,
                                      const double target_force)
-    : delta_start(delta_start)
-    , delta_final(delta_final)
+    : delta_final(delta_final)
     , increment(std::abs(increment))
     , target_force(target_force)
   {

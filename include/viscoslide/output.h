@@ -229,17 +229,14 @@ namespace viscoslide
   {
   public:
     // Lengths in any one unit; target_force NaN: none.
-    ApproachProgress(double delta_start,
-                     double delta_final,
-                     double increment,
-                     double target_force);
+    ApproachProgress(double delta_final, double increment, double target_force);
 
     // After a converged step at delta with normal force F.
     std::string
     report(double delta, double F);
 
   private:
-    double       delta_start, delta_final, increment, target_force;
+    double       delta_final, increment, target_force;
     double       last_force = std::numeric_limits<double>::quiet_NaN();
     unsigned int steps      = 0;
     std::chrono::steady_clock::time_point start =

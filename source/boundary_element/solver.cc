@@ -711,8 +711,7 @@ namespace viscoslide
          {"n_dofs", std::to_string(n_unknowns())}});
     };
     add_row("start");
-    ApproachProgress progress(prm.loading.initial_approach,
-                              prm.loading.final_approach,
+    ApproachProgress progress(prm.loading.final_approach,
                               prm.loading.increment,
                               prm.loading.target_load);
     auto             report = [&] {

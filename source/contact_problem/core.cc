@@ -46,8 +46,7 @@ namespace viscoslide
     , writer(parts.writer)
     , steady_state_table(parts.steady_state_table)
     , progress(parts.progress)
-    , approach_progress(prm.loading.initial_approach,
-                        prm.loading.final_approach,
+    , approach_progress(prm.loading.final_approach,
                         prm.loading.increment,
                         prm.loading.target_load)
   {

@@ -4,7 +4,6 @@
 #include <viscoslide/output.h>
 #include <viscoslide/steady_state_table.h>
 
-#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -154,14 +153,11 @@ namespace viscoslide
     {
       const int dimension =
         cases.empty() ? 2 : cases.front().parameters.geometry.dimension;
-      auto columns = SteadyStateTable::columns(dimension);
-      // The SI columns the cases' tables add after these (units.h).
-      if (!cases.empty())
-        for (const auto &d :
-             cases.front().parameters.units.si_columns(dimension))
-          if (std::find(columns.begin(), columns.end(), d.from) !=
-              columns.end())
-            columns.push_back(d.name);
+      // With the SI columns the cases' tables add (units.h).
+      const auto columns = CsvTable::header(
+        SteadyStateTable::columns(dimension),
+        cases.empty() ? std::vector<CsvTable::Derived>{}
+                      : cases.front().parameters.units.si_columns(dimension));
       std::ostringstream out;
       out << "# " << version_string() << "; sweep of " << cases.size()
           << " cases, one folder each\ncase,status,reason";

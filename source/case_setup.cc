@@ -293,17 +293,14 @@ namespace viscoslide
       for (unsigned int k = 0; k < p.sliding.program.size(); ++k)
         {
           const auto       &segment = p.sliding.program[k];
-          const std::string where   = "'Sliding/Program' segment " +
-                                    std::to_string(k + 1) + " ('" +
-                                    segment.text + "')";
-          const double step = p.sliding.increment * p.mesh.finest_cell;
+          const std::string where   = segment.name(k);
+          const double      step    = p.sliding.increment * p.mesh.finest_cell;
           require(segment.rest() || segment.length >= step,
                   where + " slides " + num(segment.length) +
                     " eps, less than one sliding step ('Sliding/Sliding "
                     "increment' x 'Mesh/Finest surface cell' = " +
                     num(step) + " eps)");
-          if (!segment.rest())
-            s += segment.length * (segment.speed > 0 ? 1. : -1.);
+          s += segment.displacement();
           require(std::abs(s) < p.geometry.domain_width / 2,
                   where + " takes the indenter " + num(s) +
                     " eps from the block's centre, beyond its lateral "

@@ -271,9 +271,8 @@ namespace viscoslide
         const auto segments = Utilities::split_string_list(text, ';');
         for (unsigned int k = 0; k < segments.size(); ++k)
           {
-            const std::string where = "'Sliding/Program' segment " +
-                                      std::to_string(k + 1) + " ('" +
-                                      segments[k] + "')";
+            ProgramSegment    segment{0., 0., segments[k]};
+            const std::string where = segment.name(k);
             const auto words = Utilities::split_string_list(segments[k], ' ');
             const bool slide =
               words.size() == 4 && words[0] == "slide" && words[2] == "for";
@@ -281,15 +280,16 @@ namespace viscoslide
               words.size() == 3 && words[0] == "rest" && words[1] == "for";
             require(slide || rest,
                     where + ": a segment is 'slide V for D' or 'rest for T'");
-            const double speed  = slide ? to_number(words[1]) : 0.;
-            const double length = to_number(words.back());
-            require(std::isfinite(speed) && (rest || speed != 0),
+            segment.speed  = slide ? to_number(words[1]) : 0.;
+            segment.length = to_number(words.back());
+            require(std::isfinite(segment.speed) &&
+                      (rest || segment.speed != 0),
                     where + ": the speed must be a finite number other than "
                             "0 (a stop is 'rest for T')");
-            require(std::isfinite(length) && length > 0,
+            require(std::isfinite(segment.length) && segment.length > 0,
                     where + ": the " + (slide ? "distance" : "time") +
                       " must be positive");
-            program.push_back({speed, length, segments[k]});
+            program.push_back(segment);
           }
         const auto once = program;
         for (int r = 1; r < repeats; ++r)

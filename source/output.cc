@@ -35,26 +35,34 @@ namespace viscoslide
       return ReferenceCells::get_hypercube<patch_dim>();
     }
 
-    // The derived columns of `columns` (see CsvTable::Derived): their names
-    // after the declared ones in `header`, their sources and factors.
+    // Of the derived columns (see CsvTable::Derived), those whose source
+    // is one of `columns`: the position of the source and the factor.
     std::vector<std::pair<std::size_t, double>>
     locate_derived(const std::vector<std::string>       &columns,
-                   const std::vector<CsvTable::Derived> &derived,
-                   std::vector<std::string>             &header)
+                   const std::vector<CsvTable::Derived> &derived)
     {
-      header = columns;
       std::vector<std::pair<std::size_t, double>> sources;
       for (const auto &d : derived)
         {
           const auto from = std::find(columns.begin(), columns.end(), d.from);
-          if (from == columns.end())
-            continue;
-          header.push_back(d.name);
-          sources.emplace_back(from - columns.begin(), d.factor);
+          if (from != columns.end())
+            sources.emplace_back(from - columns.begin(), d.factor);
         }
       return sources;
     }
   } // namespace
+
+
+  std::vector<std::string>
+  CsvTable::header(const std::vector<std::string> &columns,
+                   const std::vector<Derived>     &derived)
+  {
+    std::vector<std::string> names = columns;
+    for (const auto &d : derived)
+      if (std::find(columns.begin(), columns.end(), d.from) != columns.end())
+        names.push_back(d.name);
+    return names;
+  }
 
 
   CsvTable::CsvTable(const std::string              &filename,
@@ -64,8 +72,7 @@ namespace viscoslide
                      const std::vector<Derived>     &derived_columns)
     : columns(columns)
   {
-    std::vector<std::string> header;
-    derived = locate_derived(columns, derived_columns, header);
+    derived = locate_derived(columns, derived_columns);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     file = std::make_unique<std::ofstream>(filename);
@@ -74,8 +81,9 @@ namespace viscoslide
                                         "' for writing");
     if (!comment.empty())
       *file << "# " << comment << '\n';
-    for (std::size_t i = 0; i < header.size(); ++i)
-      *file << (i ? "," : "") << header[i];
+    const auto names = header(columns, derived_columns);
+    for (std::size_t i = 0; i < names.size(); ++i)
+      *file << (i ? "," : "") << names[i];
     *file << std::endl;
   }
 
@@ -149,8 +157,7 @@ namespace viscoslide
     : columns(columns)
     , rows(keep_rows)
   {
-    std::vector<std::string> header;
-    derived = locate_derived(columns, derived_columns, header);
+    derived = locate_derived(columns, derived_columns);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     std::ifstream in(filename);

@@ -256,6 +256,14 @@ namespace viscoslide
     // right after the stop is resolved. Cut to the segment's end.
     LoadState
     program_step(const Parameters::ProgramSegment &segment, double done) const;
+    // The sliding speed (V_hat) of the step under way: the segment's in a
+    // program, else the Sliding speed. [sliding.cc]
+    double
+    sliding_speed() const;
+    // The part of the program done, from its segment and the part of that.
+    // [sliding.cc]
+    double
+    program_fraction() const;
     // Sets slide_plan from the state after the approach.
     void
     plan_slide();
@@ -367,10 +375,9 @@ namespace viscoslide
     Progress        *progress;
     ApproachProgress approach_progress;
     // The program's segment under way and how much of it (eps or tau) is
-    // done; the speed of the step being recorded (V_hat).
+    // done.
     unsigned int program_segment = 0;
     double       segment_done    = 0.;
-    double       step_speed      = 0.;
 
     // The transient sliding phase: where it started, the contact length
     // after the approach, how far it may go and over which window steady

@@ -76,6 +76,19 @@ namespace viscoslide
       {
         return speed == 0.;
       }
+      // How far it moves the indenter along x (eps; 0 at rest).
+      double
+      displacement() const
+      {
+        return rest() ? 0. : speed > 0 ? length : -length;
+      }
+      // The segment as messages name it; k counts from 0.
+      std::string
+      name(const unsigned int k) const
+      {
+        return "'Sliding/Program' segment " + std::to_string(k + 1) + " ('" +
+               text + "')";
+      }
     };
 
     struct Sliding

@@ -92,6 +92,12 @@ namespace viscoslide
              MPI_Comm                        comm,
              const std::vector<Derived>     &derived = {});
 
+    // The header of a table with these columns and derived columns: the
+    // columns, then the derived ones whose source is among them.
+    static std::vector<std::string>
+    header(const std::vector<std::string> &columns,
+           const std::vector<Derived>     &derived);
+
     void
     add_row(const Row &row);
 

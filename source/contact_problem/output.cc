@@ -107,12 +107,13 @@ namespace viscoslide
     if (phase == Phase::slide)
       {
         ++history_rows;
-        const double V = std::abs(step_speed) * scales.eps / scales.tau_ref;
+        const double V =
+          std::abs(sliding_speed()) * scales.eps / scales.tau_ref;
         const double rate =
           last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
         history_table->add_row(
           {{"time_over_tau", F::format(committed.time / scales.tau_ref)},
-           {"V_hat", F::format(step_speed)},
+           {"V_hat", F::format(sliding_speed())},
            {"s_over_eps", F::format(committed.s / scales.eps)},
            {"delta_hat", F::format(committed.delta / scales.eps)},
            {"F_n_hat", F::format(sq.normal_force / scales.force)},
@@ -169,9 +170,7 @@ namespace viscoslide
     else if (phase == Phase::slide && program_segment < program.size())
       {
         pcout << "  segment " << program_segment + 1 << "/" << program.size();
-        done =
-          (program_segment + segment_done / program[program_segment].length) /
-          program.size();
+        done = program_fraction();
       }
     if (phase == Phase::approach)
       pcout << "  ["

@@ -2,6 +2,7 @@
 // (slide()), or the state handed to the steady-state solver (hand_over()).
 #include <viscoslide/contact_problem.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace viscoslide
@@ -158,7 +159,6 @@ namespace viscoslide
           << plan.distance << " eps in steps of " << ds << " eps, steady over "
           << plan.window << " eps" << std::endl;
 
-    step_speed                    = prm.sliding.speed;
     bool         steady           = false;
     unsigned int checkpointed_row = history_rows;
     while (committed.s - plan.s0 < plan.distance - 1e-9 * ds && !steady)
@@ -227,6 +227,29 @@ namespace viscoslide
   }
 
 
+  double
+  ContactProblem::sliding_speed() const
+  {
+    const auto &program = prm.sliding.program;
+    if (program.empty())
+      return prm.sliding.speed;
+    // after the program the indenter rests
+    return program_segment < program.size() ? program[program_segment].speed
+                                            : 0.;
+  }
+
+
+  double
+  ContactProblem::program_fraction() const
+  {
+    const auto &program = prm.sliding.program;
+    if (program_segment >= program.size())
+      return 1.;
+    return (program_segment + segment_done / program[program_segment].length) /
+           program.size();
+  }
+
+
   void
   ContactProblem::run_program(const bool resumed)
   {
@@ -240,13 +263,10 @@ namespace viscoslide
         double s = committed.s;
         for (unsigned int k = 0; k < program.size(); ++k)
           {
-            if (!program[k].rest())
-              s +=
-                program[k].speed > 0 ? program[k].length : -program[k].length;
+            s += program[k].displacement();
             if (std::abs(s) + 2. * L0 > prm.geometry.domain_width / 2)
               throw Parameters::ExcInvalidInput(
-                "'Sliding/Program' segment " + std::to_string(k + 1) + " ('" +
-                program[k].text + "') takes the contact, " +
+                program[k].name(k) + " takes the contact, " +
                 Parameters::num(L0) +
                 " eps long, within 2 L of the block's "
                 "lateral boundary; 'Geometry/Domain width' must be at least " +
@@ -261,10 +281,8 @@ namespace viscoslide
         history_rows    = 0;
       }
     open_history_table(resumed);
-    if (resumed && progress != nullptr && program_segment < program.size())
-      progress->resume_case(
-        (program_segment + segment_done / program[program_segment].length) /
-        program.size());
+    if (resumed && progress != nullptr)
+      progress->resume_case(program_fraction());
     unsigned int checkpointed_row = history_rows;
     while (program_segment < program.size())
       {
@@ -273,7 +291,6 @@ namespace viscoslide
               << ": " << segment.text << " under "
               << Parameters::to_string(prm.sliding.control) << " control"
               << (segment_done > 0 ? " (resumed part-way)" : "") << std::endl;
-        step_speed = segment.speed;
         while (segment_done < segment.length * (1. - 1e-12))
           {
             const LoadState target = program_step(segment, segment_done);

@@ -181,6 +181,16 @@ namespace viscoslide
         "to max(|Ft|, 1e-3 |Fn|)). The steady values in steady_state.csv "
         "are the means over that window: with adhesion the contact edges "
         "jump from node to node and Ft flickers about its mean.");
+      prm.declare_entry(
+        "Energy balance tolerance",
+        "5e-3",
+        Patterns::Double(),
+        "The transient declares a steady state only when, besides the "
+        "window test of Steady-state tolerance, the work of the x force on "
+        "the indenter balances the dissipation over the window to this "
+        "fraction: |F_t V / D - 1| <= tolerance (not judged where "
+        "mu_energy < 1e-3, the elastic limits). A coarse mesh leaves the "
+        "balance off by about 1 % even once the window has settled.");
       prm.declare_entry("Steady-state window",
                         "0",
                         Patterns::Double(),
@@ -314,11 +324,12 @@ namespace viscoslide
         }
       speed   = speeds.back();
       control = parse_choice<Control>(prm.get("Control"), "Sliding/Control");
-      spring_stiffness = prm.get_double("Spring stiffness");
-      increment        = prm.get_double("Sliding increment");
-      max_distance     = prm.get_double("Maximum sliding distance");
-      steady_tolerance = prm.get_double("Steady-state tolerance");
-      steady_window    = prm.get_double("Steady-state window");
+      spring_stiffness  = prm.get_double("Spring stiffness");
+      increment         = prm.get_double("Sliding increment");
+      max_distance      = prm.get_double("Maximum sliding distance");
+      steady_tolerance  = prm.get_double("Steady-state tolerance");
+      steady_window     = prm.get_double("Steady-state window");
+      balance_tolerance = prm.get_double("Energy balance tolerance");
       solver = parse_choice<SlidingSolver>(prm.get("Solver"), "Sliding/Solver");
       continuation_factor   = prm.get_double("Continuation factor");
       viscous_strain_degree = prm.get_integer("Viscous strain degree");
@@ -366,6 +377,9 @@ namespace viscoslide
                 " must not be negative");
       require(steady_tolerance > 0,
               entry("Sliding", "Steady-state tolerance", steady_tolerance) +
+                " must be positive");
+      require(balance_tolerance > 0,
+              entry("Sliding", "Energy balance tolerance", balance_tolerance) +
                 " must be positive");
       require(steady_window >= 0,
               entry("Sliding", "Steady-state window", steady_window) +

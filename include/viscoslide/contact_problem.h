@@ -273,6 +273,10 @@ namespace viscoslide
     window_mean(double from, double to) const;
     bool
     window_is_steady() const;
+    // The energy balance F_t V / D - 1 over the last window (NaN where not
+    // judged: energy_balance() of steady_state_table.h).
+    double
+    window_balance() const;
     // The steady_state.csv row of the last window.
     void
     report_slide(bool steady);

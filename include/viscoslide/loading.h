@@ -100,6 +100,7 @@ namespace viscoslide
       double              increment;        // in finest cells
       double              max_distance;
       double              steady_tolerance;
+      double              balance_tolerance; // of the transient's steady state
       double              steady_window;
       SlidingSolver       solver;
       double              continuation_factor;

@@ -20,6 +20,17 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  // F_t V / D - 1 of a steady state: the traction law is conservative,
+  // so the work of the x force on the indenter equals the dissipation
+  // (doc/model.md, checks). NaN where mu_energy = D / (V |F_n|) < 1e-3
+  // (the elastic limits), where the ratio is noise.
+  double
+  energy_balance(double tangential_force,
+                 double normal_force,
+                 double V,
+                 double dissipation_rate);
+
+
   class SteadyStateTable
   {
   public:

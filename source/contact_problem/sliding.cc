@@ -104,6 +104,19 @@ namespace viscoslide
   }
 
 
+  double
+  ContactProblem::window_balance() const
+  {
+    using Sample = SlideSample;
+    const Sample mean =
+      window_mean(committed.s - slide_plan.window, committed.s);
+    return energy_balance(mean.value[Sample::tangential_force],
+                          mean.value[Sample::normal_force],
+                          prm.sliding.speed * scales.eps / scales.tau_ref,
+                          mean.value[Sample::dissipation_rate]);
+  }
+
+
   // The steady values are the means over the last window (over all of the
   // sliding if it was shorter).
   void
@@ -159,7 +172,8 @@ namespace viscoslide
           << plan.distance << " eps in steps of " << ds << " eps, steady over "
           << plan.window << " eps" << std::endl;
 
-    bool         steady           = false;
+    // Steady: the window has settled and the energy balances over it.
+    bool         steady = false, settled = false, balanced = false;
     unsigned int checkpointed_row = history_rows;
     while (committed.s - plan.s0 < plan.distance - 1e-9 * ds && !steady)
       {
@@ -183,7 +197,11 @@ namespace viscoslide
                             q.tangential_force,
                             q.contact_length,
                             last_dissipation_rate}});
-        steady = window_is_steady();
+        settled = window_is_steady();
+        // NaN (not judged) passes.
+        balanced = settled && !(std::abs(window_balance()) >
+                                prm.sliding.balance_tolerance);
+        steady   = settled && balanced;
         if (!steady && prm.output.checkpoint_every > 0 &&
             history_rows >= checkpointed_row + prm.output.checkpoint_every)
           {
@@ -195,7 +213,19 @@ namespace viscoslide
     report_slide(steady);
     write_profile("surface_profile_steady.csv");
     pcout << (steady ? "Steady state" : "NO steady state") << " after "
-          << committed.s - plan.s0 << " eps" << std::endl;
+          << committed.s - plan.s0 << " eps";
+    if (!settled)
+      pcout << ": the window has not settled to 'Sliding/Steady-state "
+               "tolerance' = "
+            << prm.sliding.steady_tolerance;
+    else if (!balanced)
+      pcout << ": the window has settled, but the energy balances only to "
+            << 100 * window_balance()
+            << " % ('Sliding/Energy balance tolerance' = "
+            << prm.sliding.balance_tolerance
+            << "): the wake is still changing, or the mesh does not resolve "
+               "V tau and the contact edges";
+    pcout << std::endl;
     coupling.hold_approach();
   }
 

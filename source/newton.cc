@@ -238,7 +238,10 @@ namespace viscoslide
                         "(doc/model.md, Linear solver). "
                         "'iterative': GMRES with algebraic multigrid (ML). "
                         "'automatic': direct up to Direct solver limit "
-                        "unknowns, iterative above.");
+                        "unknowns, iterative above. For the approach and the "
+                        "transient solver; the steady-state solver always "
+                        "uses the direct one (doc/benchmark.md, An iterative "
+                        "solver for the steady state).");
       prm.declare_entry("Direct solver limit",
                         "500000",
                         Patterns::Integer(1),

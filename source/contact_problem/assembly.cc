@@ -265,7 +265,20 @@ namespace viscoslide
     SolverControl control(2000, 1e-10 * rhs.l2_norm());
     SolverGMRES<TrilinosWrappers::MPI::Vector> solver(
       control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(200));
-    solver.solve(system_matrix, x, rhs, *amg);
+    // A solve that does not converge leaves GMRES's last iterate: Newton's
+    // line search judges it by the residual, and where it fails the step
+    // is cut or relaxed like any other failed Newton step.
+    try
+      {
+        solver.solve(system_matrix, x, rhs, *amg);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        pcout << "      GMRES did not converge in " << control.last_step()
+              << " iterations (residual " << control.last_value() << " against "
+              << control.tolerance()
+              << "); Newton's method judges its last iterate" << std::endl;
+      }
   }
 
 

@@ -18,7 +18,7 @@ namespace viscoslide
                         "with work of separation dgamma (doc/model.md). " +
                           Laws::documentation());
       prm.declare_entry("Tabor parameter",
-                        "6.08",
+                        default_tabor_parameter,
                         Patterns::Double(),
                         "muT = (R dgamma^2/(E0*^2 eps^3))^(1/3), computed with "
                         "the relaxed modulus. 1: long-range, 6.08: "
@@ -26,7 +26,7 @@ namespace viscoslide
                         "'repulsive' it only sets the stiffness of the "
                         "repulsive wall.");
       prm.declare_entry("R over eps",
-                        "1e4",
+                        default_R_over_eps,
                         Patterns::Double(),
                         "Indenter radius R_hat = R/eps. The paper does not "
                         "state it; with 1e4, dgamma/(E0* eps) = 0.15 at "

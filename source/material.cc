@@ -226,7 +226,7 @@ namespace viscoslide
     {
       prm.enter_subsection("Material");
       prm.declare_entry("E0 over Einf",
-                        "0.1",
+                        default_E0_over_Einf,
                         Patterns::Double(),
                         "Ratio of the relaxed (low-frequency) to the "
                         "instantaneous (high-frequency) Young's modulus of "

@@ -301,14 +301,19 @@ namespace viscoslide
             segment.length /= u.time_constant; // s to tau
           else
             segment.speed *= u.time_constant / eps;
-        require_default(p.material.E0_over_Einf == 0.1,
+        using Parameters::Adhesion;
+        using Parameters::Material;
+        require_default(p.material.E0_over_Einf ==
+                          std::stod(Material::default_E0_over_Einf),
                         "Material/E0 over Einf",
                         "Relaxed modulus and Instantaneous modulus");
-        require_default(p.adhesion.tabor_parameter == 6.08 &&
+        require_default(p.adhesion.tabor_parameter ==
+                            std::stod(Adhesion::default_tabor_parameter) &&
                           p.sweep.tabor_parameters.empty(),
                         "Adhesion/Tabor parameter",
                         "Radius, Work of adhesion and Interaction range");
-        require_default(p.adhesion.R_over_eps == 1e4,
+        require_default(p.adhesion.R_over_eps ==
+                          std::stod(Adhesion::default_R_over_eps),
                         "Adhesion/R over eps",
                         "Radius and Interaction range");
         // A Prony series' weights are the arms' moduli in Pa.

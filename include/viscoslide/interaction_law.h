@@ -46,6 +46,10 @@ namespace viscoslide
   {
     struct Adhesion
     {
+      // The declared defaults (units.cc refuses changed ones in SI).
+      static constexpr const char *default_tabor_parameter = "6.08";
+      static constexpr const char *default_R_over_eps      = "1e4";
+
       std::string  law; // a registered InteractionLawType
       double       tabor_parameter;
       double       R_over_eps;

@@ -166,6 +166,9 @@ namespace viscoslide
     // series (make_solid() of scales.h builds the solid in internal units).
     struct Material
     {
+      // The declared default (units.cc refuses a changed one in SI).
+      static constexpr const char *default_E0_over_Einf = "0.1";
+
       double       E0_over_Einf;
       double       poisson_ratio;
       TimeConstant time_constant;

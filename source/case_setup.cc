@@ -1,3 +1,4 @@
+#include <viscoslide/boundary_element/grid.h>
 #include <viscoslide/case_setup.h>
 #include <viscoslide/indenter.h>
 #include <viscoslide/parameters.h>
@@ -289,6 +290,56 @@ namespace viscoslide
     }
 
 
+    // The graded grid of the boundary elements (plane strain, half-plane)
+    // starts from the JKR contact at the Target load; its dense
+    // compliance takes about 4 n^2 numbers, n the cells of the grid about
+    // that contact: refused before anything is written if that will not
+    // fit in memory.
+    void
+    check_graded_grid(const AllParameters &p, const double spacing)
+    {
+      const std::string what = "'Boundary element/Grid' = graded";
+      require(p.geometry.dimension == 2,
+              what + " is plane strain: set 'Geometry/Dimension' = 2");
+      require(p.geometry.substrate == Substrate::half_plane,
+              what + " needs 'Geometry/Substrate' = half-plane (its "
+                     "compliance is the isolated half-plane's)");
+      require(p.loading.has_target_load() && !p.loading.retract,
+              what + " needs a 'Loading/Target load' and no retraction: "
+                     "it starts from the JKR contact at that load");
+      // Internal units: eps = E0* = 1.
+      const double R = p.adhesion.R_over_eps;
+      const double dgamma =
+        std::sqrt(std::pow(p.adhesion.tabor_parameter, 3) / R);
+      const double P =
+        p.loading.target_load * std::cbrt(M_PI * dgamma * dgamma * R);
+      const double a = cylinder_jkr_half_width(P, dgamma, R);
+      require(std::isfinite(a),
+              entry("Loading", "Target load", p.loading.target_load) +
+                " is below the JKR pull-off force of the relaxed contact, "
+                "from which " +
+                what + " starts");
+      const double cells = graded_boundaries(-a,
+                                             a,
+                                             spacing,
+                                             p.boundary_element.grading_ratio,
+                                             std::max(a, 50.))
+                             .size() -
+                           1;
+      const double gigabytes = 4. * 8. * cells * cells / 1e9;
+      const double available =
+        double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)) / 1e9;
+      std::ostringstream message;
+      message << what << " about the JKR contact (" << 2 * a
+              << " eps wide) has about " << cells << " cells, whose dense "
+              << "compliance needs about " << gigabytes
+              << " GB; this machine has " << available
+              << " GB: raise 'Boundary element/Grid spacing' or 'Boundary "
+                 "element/Grading ratio'";
+      require(gigabytes <= 0.8 * available, message.str());
+    }
+
+
     void
     check_consistency(const AllParameters &p)
     {
@@ -369,6 +420,11 @@ namespace viscoslide
           const double h = p.boundary_element.grid_spacing > 0
                              ? p.boundary_element.grid_spacing
                              : p.mesh.finest_cell / 2;
+          if (p.boundary_element.grid == GridKind::graded)
+            {
+              check_graded_grid(p, h);
+              return;
+            }
           const double L = p.boundary_element.period > 0
                              ? p.boundary_element.period
                              : p.geometry.domain_width;

@@ -3,6 +3,7 @@
 #include <fftw3.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace viscoslide
 {
@@ -62,6 +63,13 @@ namespace viscoslide
       return product(n) / n[d - 1] * (n[d - 1] / 2 + 1);
     }
   } // namespace
+
+
+  FullMatrix<double>
+  Compliance::block(const unsigned int, const unsigned int) const
+  {
+    throw std::logic_error("this compliance offers no matrix block");
+  }
 
 
   template <int dim>
@@ -251,6 +259,21 @@ namespace viscoslide
     unit[0] = 1.;
     apply(unit, response);
     return response;
+  }
+
+
+  template <int dim>
+  FullMatrix<double>
+  SurfaceCompliance<dim>::block(const unsigned int first,
+                                const unsigned int m) const
+  {
+    (void)first; // circulant: the same block everywhere
+    const Vector<double> column = impulse_response();
+    FullMatrix<double>   c(m, m);
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = 0; j < m; ++j)
+        c(i, j) = column[(i + n_points - j) % n_points];
+    return c;
   }
 
 

@@ -18,12 +18,21 @@ namespace viscoslide
     assemble(false);
     const unsigned int n   = u.size();
     const unsigned int n_x = shape[dim - 2];
-    // Neighbours along x within a row, periodic.
-    const auto next = [n_x](const unsigned int j) {
+    // Neighbours along x within a row, periodic; on the graded grid the
+    // ends are their own neighbours (no traction reaches them), and the
+    // distance to the next point is its own.
+    const auto next = [this, n_x](const unsigned int j) {
+      if (graded)
+        return std::min(j + 1, n_x - 1);
       return j - j % n_x + (j % n_x + 1) % n_x;
     };
-    const auto previous = [n_x](const unsigned int j) {
+    const auto previous = [this, n_x](const unsigned int j) {
+      if (graded)
+        return j > 0 ? j - 1 : 0u;
       return j - j % n_x + (j % n_x + n_x - 1) % n_x;
+    };
+    const auto spacing = [&](const unsigned int j) {
+      return graded ? x[next(j)] - x[j] : dx;
     };
     const double      gc = prm.adhesion.contact_gap * scales.eps;
     SurfaceQuantities q{};
@@ -33,13 +42,15 @@ namespace viscoslide
     for (unsigned int j = 0; j < n; ++j)
       {
         const double p = -traction[j];
-        q.normal_force += p * dA;
-        q.absolute_force += std::abs(p) * dA;
-        q.tangential_force += p * slope[j] * dA;
-        if (gaps[j] < gc)
+        q.normal_force += p * area[j];
+        q.absolute_force += std::abs(p) * area[j];
+        q.tangential_force += p * slope[j] * area[j];
+        if (gaps[j] < gc && next(j) != previous(j))
           {
-            const double du_dx = (u[next(j)] - u[previous(j)]) / (2 * dx);
-            q.contact_set_tangential_force += p * du_dx * dA;
+            const double du_dx =
+              (u[next(j)] - u[previous(j)]) /
+              (graded ? x[next(j)] - x[previous(j)] : 2 * dx);
+            q.contact_set_tangential_force += p * du_dx * area[j];
           }
         q.minimum_gap = std::min(q.minimum_gap, gaps[j]);
         // The contact set's edges between j and its neighbours, the gap
@@ -50,13 +61,13 @@ namespace viscoslide
           return (gc - g0) / (g - g0);
         };
         if (dim == 2 && g0 < gc && g1 < gc)
-          q.contact_length += dx;
+          q.contact_length += spacing(j);
         else if ((g0 < gc) != (g1 < gc))
           {
             const double t = crossing(g1);
             if (dim == 2)
-              q.contact_length += (g0 < gc ? t : 1. - t) * dx;
-            const double edge = x[j] + t * dx;
+              q.contact_length += (g0 < gc ? t : 1. - t) * spacing(j);
+            const double edge = x[j] + t * spacing(j);
             q.x_trail         = std::min(q.x_trail, edge);
             q.x_lead          = std::max(q.x_lead, edge);
           }

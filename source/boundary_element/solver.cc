@@ -54,6 +54,8 @@ namespace viscoslide
             : prm.mesh.finest_cell / 2) *
          scales.eps)
     , dA(std::pow(dx, dim - 1))
+    , graded(dim == 2 &&
+             prm.boundary_element.grid == Parameters::GridKind::graded)
     , substrate(Parameters::Substrate::layer)
     , thickness(prm.geometry.height() * scales.eps)
   {
@@ -122,6 +124,8 @@ namespace viscoslide
             u[j]           = old_u[o_y * old_x + o_x];
           }
       }
+    area.assign(n, dA);
+    ++grid_generation;
     preconditioner.reset();
     pcout << "Boundary-element grid: " << n << " points";
     if (dim == 3)
@@ -141,6 +145,8 @@ namespace viscoslide
   void
   BoundaryElementSolver<dim>::fit_period(const double V)
   {
+    if (graded)
+      return; // the graded grid follows the contact, not the period
     // The isolated half-space of 3D needs no period: its window is the
     // Domain width along the track and the Domain length across it at
     // every speed.
@@ -170,6 +176,143 @@ namespace viscoslide
   BoundaryElementSolver<dim>::isolated_half_space() const
   {
     return dim == 3 && substrate == Parameters::Substrate::half_plane;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::make_graded_grid(
+    const std::vector<double>       &new_boundaries,
+    const std::pair<double, double> &edges)
+  {
+    const std::vector<double> old_x = x;
+    const Vector<double>      old_u = u;
+    boundaries                      = new_boundaries;
+    grid_edges                      = edges;
+    const unsigned int n            = boundaries.size() - 1;
+    shape[dim - 2]                  = n;
+    compliance = std::make_unique<GradedCompliance>(material,
+                                                    prm.material.poisson_ratio,
+                                                    boundaries,
+                                                    thickness);
+    set_compliance_speed(V_hat * scales.eps / scales.tau_ref);
+    x.resize(n);
+    y.assign(n, 0.);
+    h.resize(n);
+    slope.resize(n);
+    area.resize(n);
+    u.reinit(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        x[j]     = 0.5 * (boundaries[j] + boundaries[j + 1]);
+        area[j]  = boundaries[j + 1] - boundaries[j];
+        h[j]     = indenter.profile(x[j]);
+        slope[j] = indenter.slope(x[j]);
+        if (old_x.empty())
+          continue;
+        // Linear between the old points, beyond them the nearer end's.
+        const auto k =
+          std::upper_bound(old_x.begin(), old_x.end(), x[j]) - old_x.begin();
+        if (k == 0)
+          u[j] = old_u[0];
+        else if (k == long(old_x.size()))
+          u[j] = old_u[old_x.size() - 1];
+        else
+          {
+            const double t = (x[j] - old_x[k - 1]) / (old_x[k] - old_x[k - 1]);
+            u[j]           = (1 - t) * old_u[k - 1] + t * old_u[k];
+          }
+      }
+    ++grid_generation;
+    preconditioner.reset();
+    pcout << "Graded boundary-element grid: " << n << " cells, " << dx
+          << " eps at the contact edges x/R = " << edges.first / scales.R
+          << ", " << edges.second / scales.R << ", window "
+          << boundaries.front() / scales.eps << " to "
+          << boundaries.back() / scales.eps << " eps" << std::endl;
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::refit_graded_grid()
+  {
+    const unsigned int n     = u.size();
+    const double       ratio = prm.boundary_element.grading_ratio;
+    // Where the cells are at most 1.5 times the finest.
+    const double tolerance = 0.5 * dx / (ratio - 1);
+    const double trail = last_quantities.x_trail, lead = last_quantities.x_lead;
+    const bool   loaded_ends =
+      std::max(std::abs(traction[0]), std::abs(traction[n - 1])) >
+      1e-4 * scales.sigma_max;
+    if (loaded_ends)
+      margin_factor *= 2;
+    if (!loaded_ends && std::abs(trail - grid_edges.first) <= tolerance &&
+        std::abs(lead - grid_edges.second) <= tolerance)
+      return false;
+    const double margin =
+      std::max(margin_factor * (lead - trail), 50 * scales.eps);
+    make_graded_grid(graded_boundaries(trail, lead, dx, ratio, margin),
+                     {trail, lead});
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::start_from_jkr_contact()
+  {
+    // The JKR contact in plane strain (cylinder_jkr_half_width, grid.h) of
+    // the relaxed solid (E0* = 1): the pressure sqrt(a^2 - x^2)/(2R) -
+    // P_A/(pi sqrt(a^2 - x^2)), P_A = sqrt(2 pi dgamma a).
+    const double R = scales.R, dgamma = scales.dgamma;
+    const double P = prm.loading.target_load * scales.force;
+    const double a = cylinder_jkr_half_width(P, dgamma, R);
+    if (!std::isfinite(a))
+      throw Parameters::ExcInvalidInput(
+        "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
+        " is below the JKR pull-off force of the relaxed contact: "
+        "'Boundary element/Grid' = graded starts from the JKR contact");
+    const double P_A    = std::sqrt(2 * M_PI * dgamma * a);
+    const double margin = std::max(margin_factor * 2 * a, 50 * scales.eps);
+    const double ratio  = prm.boundary_element.grading_ratio;
+    make_graded_grid(graded_boundaries(-a, a, dx, ratio, margin), {-a, a});
+    // Each cell's mean of the JKR traction (attraction > 0).
+    const auto ellipse = [a](const double t) {
+      return 0.5 * (t * std::sqrt(a * a - t * t) + a * a * std::asin(t / a));
+    };
+    const unsigned int n = u.size();
+    Vector<double>     q(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const double c0 = std::max(boundaries[j], -a),
+                     c1 = std::min(boundaries[j + 1], a);
+        if (c1 <= c0)
+          continue;
+        const double hertz = (ellipse(c1) - ellipse(c0)) / (2 * R);
+        const double adhesion =
+          P_A / M_PI * (std::asin(c1 / a) - std::asin(c0 / a));
+        q[j] = -(hertz - adhesion) / area[j];
+      }
+    compliance->apply(q, u);
+    // delta such that the gap at the apex is eps.
+    const unsigned int apex =
+      std::min_element(x.begin(),
+                       x.end(),
+                       [](const double p, const double r) {
+                         return std::abs(p) < std::abs(r);
+                       }) -
+      x.begin();
+    delta = h[apex] - u[apex];
+    control.hold_force(P);
+    pcout << "Start: the JKR contact of the relaxed solid at F_hat = "
+          << prm.loading.target_load << ", L_hat = " << 2 * a / scales.R
+          << std::endl;
+    if (solve() < 0)
+      throw std::runtime_error(
+        "the boundary-element solver found no equilibrium from the JKR "
+        "contact at the Target load (Newton's method and the relaxation "
+        "did not converge on the graded grid)");
   }
 
 
@@ -230,7 +373,7 @@ namespace viscoslide
         traction[j] = law.traction(gaps[j]);
         tangent[j]  = law.derivative(gaps[j]);
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
-        Fn -= traction[j] * dA;
+        Fn -= traction[j] * area[j];
       }
     compliance->apply(w, Cw);
     residual.reinit(n + 1);
@@ -286,14 +429,15 @@ namespace viscoslide
                                     no_contact ? 0 : last + 1 - first))
           {
             TimerOutput::Scope t(timer, "boundary element: factorization");
-            preconditioner = std::make_unique<WindowPreconditioner>(
-              static_cast<const SurfaceCompliance<dim> &>(*compliance),
-              tangent,
-              dashpot,
-              begin,
-              m,
-              control.force_controlled,
-              scales.sigma_max / dx);
+            preconditioner =
+              std::make_unique<WindowPreconditioner>(*compliance,
+                                                     tangent,
+                                                     dashpot,
+                                                     begin,
+                                                     m,
+                                                     control.force_controlled,
+                                                     area,
+                                                     scales.sigma_max);
             work_since_factorization   = factorization_work(m);
             solves_since_factorization = 1;
             last_gmres_work            = 0.;
@@ -317,7 +461,7 @@ namespace viscoslide
     for (unsigned int j = 0; j < n; ++j)
       {
         misfit += residual[j] * residual[j];
-        absolute += std::abs(traction[j]) * dA;
+        absolute += std::abs(traction[j]) * area[j];
       }
     const double load =
       residual[n] * scales.sigma_max / (absolute + scales.sigma_max * dA);
@@ -349,7 +493,7 @@ namespace viscoslide
             const double du = src[j];
             const double dd = s.control.force_controlled ? src[n] : 0.;
             w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
-            load += s.tangent[j] * (du + dd) * s.dA;
+            load += s.tangent[j] * (du + dd) * s.area[j];
           }
         s.compliance->apply(w, Cw);
         for (unsigned int j = 0; j < n; ++j)
@@ -424,6 +568,38 @@ namespace viscoslide
   int
   BoundaryElementSolver<dim>::solve()
   {
+    int its = solve_on_grid();
+    if (!graded || its < 0)
+      return its;
+    // A graded grid follows the contact edges: solved again on a grid
+    // about the edges found, until they are where the grid is finest. If
+    // that fails, the state before, on its own grid.
+    const std::vector<double> old_boundaries = boundaries;
+    const Vector<double>      old_u          = u;
+    const double              old_delta      = delta;
+    const auto                old_edges      = grid_edges;
+    for (unsigned int k = 0; k < 8 && refit_graded_grid(); ++k)
+      {
+        const int more = solve_on_grid();
+        if (more < 0)
+          {
+            make_graded_grid(old_boundaries, old_edges);
+            u     = old_u;
+            delta = old_delta;
+            update_quantities();
+            return -1;
+          }
+        its += more;
+      }
+    last_newton_iterations = its;
+    return its;
+  }
+
+
+  template <int dim>
+  int
+  BoundaryElementSolver<dim>::solve_on_grid()
+  {
     const Vector<double> u_start          = u;
     const double         delta_start      = delta;
     const NewtonProblem  problem          = newton_problem();
@@ -479,12 +655,14 @@ namespace viscoslide
     double         at = from, size = step;
     double         at_before = 0, delta_before = 0;
     Vector<double> u_before;
+    unsigned int   generation_before = 0;
     while (at != to)
       {
         const bool           last = std::abs(to - at) <= size * (1 + 1e-9);
         const double         next = last ? to : at + (to > at ? size : -size);
         const Vector<double> u_at = u;
-        const double         delta_at = delta;
+        const double         delta_at      = delta;
+        const unsigned int   generation_at = grid_generation;
         set(next);
         // Secant predictor from the step before, then no predicted gap
         // below the smaller of its present one and eps: a point that the
@@ -493,7 +671,9 @@ namespace viscoslide
         // contact moved with delta), where the traction is huge and
         // Newton's method crawls back.
         const double ratio =
-          u_before.size() == u.size() ? (next - at) / (at - at_before) : 0.;
+          generation_before == grid_generation && u_before.size() == u.size()
+            ? (next - at) / (at - at_before)
+            : 0.;
         const bool secant = ratio != 0. && std::abs(ratio) <= 2;
         if (secant && control.force_controlled)
           delta += ratio * (delta_at - delta_before);
@@ -508,10 +688,11 @@ namespace viscoslide
           }
         if (solve() >= 0)
           {
-            at_before    = at;
-            u_before     = u_at;
-            delta_before = delta_at;
-            at           = next;
+            at_before         = at;
+            u_before          = u_at;
+            delta_before      = delta_at;
+            generation_before = generation_at;
+            at                = next;
             on_converged();
             if (done())
               return true;
@@ -670,17 +851,10 @@ namespace viscoslide
     TimerOutput::Scope t(timer, "boundary element: approach");
     // In 2D on the block of Domain height; in 3D on the substrate itself
     // (the isolated half-space's delta is measured from the far field).
-    substrate =
-      dim == 3 ? prm.geometry.substrate : Parameters::Substrate::layer;
-    thickness = prm.geometry.height() * scales.eps;
-    fit_period(0.);
-    control.hold_approach();
-    delta = prm.loading.initial_approach * scales.eps;
-    if (solve() < 0)
-      throw std::runtime_error(
-        "the boundary-element solver found no equilibrium at the initial "
-        "approach delta_hat = " +
-        CsvTable::format(prm.loading.initial_approach));
+    // The graded grid on the half-plane from the start.
+    substrate         = dim == 3 || graded ? prm.geometry.substrate
+                                           : Parameters::Substrate::layer;
+    thickness         = prm.geometry.height() * scales.eps;
     const double F    = prm.loading.target_load * scales.force;
     bool         done = false;
     CsvTable     table(writer.path("approach.csv"),
@@ -710,6 +884,20 @@ namespace viscoslide
          {"newton_iterations", std::to_string(last_newton_iterations)},
          {"n_dofs", std::to_string(n_unknowns())}});
     };
+    if (graded)
+      {
+        start_from_jkr_contact();
+        add_row("load");
+        return;
+      }
+    fit_period(0.);
+    control.hold_approach();
+    delta = prm.loading.initial_approach * scales.eps;
+    if (solve() < 0)
+      throw std::runtime_error(
+        "the boundary-element solver found no equilibrium at the initial "
+        "approach delta_hat = " +
+        CsvTable::format(prm.loading.initial_approach));
     add_row("start");
     ApproachProgress progress(prm.loading.final_approach,
                               prm.loading.increment,
@@ -751,7 +939,8 @@ namespace viscoslide
       control.hold_force(last_quantities.normal_force);
     else
       control.hold_approach();
-    if (dim == 2 && prm.geometry.substrate == Parameters::Substrate::half_plane)
+    if (dim == 2 && !graded &&
+        prm.geometry.substrate == Parameters::Substrate::half_plane)
       {
         // From the block of the approach to the half-plane, at the load
         // of the approach.

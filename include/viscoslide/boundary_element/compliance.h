@@ -19,6 +19,7 @@
 #ifndef viscoslide_boundary_element_compliance_h
 #define viscoslide_boundary_element_compliance_h
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/material.h>
@@ -52,7 +53,22 @@ namespace viscoslide
     // state: its dissipation.
     virtual double
     dissipation_rate(const Vector<double> &q) const = 0;
+
+    // The block C[first + i][first + j], i, j < m, of the matrix of C, for
+    // the window preconditioner of plane strain (window_preconditioner.h);
+    // not offered by the 3D isolated contact, whose preconditioner is
+    // multigrid.
+    virtual FullMatrix<double>
+    block(unsigned int first, unsigned int m) const;
   };
+
+
+  // The creep of a Prony series as a sum of retardations, with s = i w:
+  //     1/E*(s) = 1/Einf* + sum_r c_r/(1 + s theta_r),
+  // the pairs (theta_r, c_r), one for each arm (E0* = 1; nu of every
+  // branch). [isolated_compliance.cc]
+  std::vector<std::pair<double, double>>
+  creep_retardations(const ViscoelasticSolid &material, double nu);
 
 
   template <int dim>
@@ -84,6 +100,10 @@ namespace viscoslide
 
     void
     apply(const Vector<double> &q, Vector<double> &u) const override;
+
+    // From the impulse response: C is circulant.
+    FullMatrix<double>
+    block(unsigned int first, unsigned int m) const override;
 
     // q = K u with K the inverse of C, the surface stiffness; for the
     // half-space's k = 0 mode (no compliance) the stiffness of the

@@ -1,19 +1,32 @@
-// The 'Boundary element' section: the uniform surface grid of the
-// boundary-element solver and its period (boundary_element/solver.h).
+// The 'Boundary element' section: the surface grid of the boundary-element
+// solver (boundary_element/solver.h), uniform and periodic or, in plane
+// strain on the half-plane, graded about the contact edges; and the
+// graded grid's construction.
 #ifndef viscoslide_boundary_element_grid_h
 #define viscoslide_boundary_element_grid_h
 
 #include <viscoslide/input.h>
 
+#include <vector>
+
 namespace viscoslide
 {
   namespace Parameters
   {
+    enum class GridKind
+    {
+      uniform,
+      graded
+    };
+    VISCOSLIDE_CHOICES(GridKind, "uniform", "graded")
+
     struct BoundaryElement
     {
-      double grid_spacing; // eps; 0: half the Finest surface cell
-      double period;       // eps; 0: automatic
-      double wake_periods; // the automatic period, in V tau_c
+      GridKind grid;
+      double   grid_spacing;  // eps; 0: half the Finest surface cell
+      double   grading_ratio; // of neighbouring cells of the graded grid
+      double   period;        // eps; 0: automatic
+      double   wake_periods;  // the automatic period, in V tau_c
 
       static void
       declare(ParameterHandler &prm);
@@ -21,6 +34,30 @@ namespace viscoslide
       parse(ParameterHandler &prm);
     };
   } // namespace Parameters
+
+  // The cell boundaries s_0 < ... < s_n of the graded grid about a contact
+  // whose edges are at `trail` < `lead` (any unit): cells of width
+  // `finest` at both edges, each `ratio` times its neighbour nearer to an
+  // edge, at most a 200th of the contact's width (the interior, where the
+  // pressure is smooth on that scale), out to `margin` beyond each edge.
+  // Cells growing away from an edge resolve each feature at the relative
+  // resolution ratio - 1 of its distance from the edge: the adhesive zone
+  // at the edge, a relaxation length V tau from it.
+  std::vector<double>
+  graded_boundaries(double trail,
+                    double lead,
+                    double finest,
+                    double ratio,
+                    double margin);
+
+  // The half-width a of the JKR contact of a parabolic cylinder of radius
+  // R on a solid of plane-strain modulus 1 under the load P per unit
+  // length (compressive > 0), on the stable branch of
+  //     P(a) = pi a^2/(4R) - sqrt(2 pi dgamma a)
+  // (Johnson, Contact Mechanics; Barquins 1988); NaN below the pull-off
+  // force, the minimum of P(a).
+  double
+  cylinder_jkr_half_width(double P, double dgamma, double R);
 } // namespace viscoslide
 
 #endif

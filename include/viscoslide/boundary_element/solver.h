@@ -4,7 +4,11 @@
 // Only the top surface is discretised: the vertical displacement u_j at
 // the points x_j of a uniform periodic grid centred on the indenter's
 // apex, a line of points in plane strain (dim = 2), a plane of them in 3D
-// (the indenter then the body of revolution of its profile). In the
+// (the indenter then the body of revolution of its profile); or, in plane
+// strain on the half-plane, at the centres of the cells of a grid graded
+// about the contact edges (Boundary element/Grid = graded;
+// graded_compliance.h), which follows the edges and starts from the JKR
+// contact at the Target load. In the
 // indenter's frame the steady state solves
 //     u = C q(g),   g_j = eps + h(x_j) - delta - u_j,
 // with C the viscoelastic surface compliance at the sliding speed
@@ -28,6 +32,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/graded_compliance.h>
 #include <viscoslide/boundary_element/isolated_compliance.h>
 #include <viscoslide/boundary_element/multigrid_preconditioner.h>
 #include <viscoslide/case.h>
@@ -119,6 +124,20 @@ namespace viscoslide
     fit_period(double V_hat);
     void
     make_grid(const std::array<unsigned int, dim - 1> &shape);
+    // The graded grid of cells between `boundaries`, made for contact
+    // edges at `edges`, the state interpolated onto it. [solver.cc]
+    void
+    make_graded_grid(const std::vector<double>       &new_boundaries,
+                     const std::pair<double, double> &edges);
+    // Whether the contact edges of the present state lie where the
+    // graded grid's cells are finest; if not, a new grid about them.
+    // [solver.cc]
+    bool
+    refit_graded_grid();
+    // The graded grid's start: the JKR contact of the relaxed solid at the
+    // Target load, solved with the traction law. [solver.cc]
+    void
+    start_from_jkr_contact();
     // In 3D a half-space is the isolated contact's (isolated_compliance.h),
     // a layer periodic. [solver.cc]
     bool
@@ -132,9 +151,12 @@ namespace viscoslide
 
     // Newton's method, then pseudo-transient relaxation, at the present
     // speed, control and delta or load; on failure the state is restored.
-    // Returns the iterations or -1. [solver.cc]
+    // Returns the iterations or -1. A graded grid is made anew about the
+    // edges found until they lie where it is finest. [solver.cc]
     int
     solve();
+    int
+    solve_on_grid();
     NewtonProblem
     newton_problem();
     void
@@ -198,8 +220,16 @@ namespace viscoslide
     // the area dA = dx^(dim-1); the indenter's h and dh/dx there; and the
     // solid its compliance describes: during the approach of a half-plane
     // the block of Domain height on a rigid base, as in the finite
-    // elements (doc/boundary_element.md, Approach).
-    const double                      dx, dA;
+    // elements (doc/boundary_element.md, Approach). The graded grid:
+    // n_x cells between `boundaries`, x_j their centres, area_j their
+    // widths, made for the edges at grid_edges; dx its finest cell.
+    const double              dx, dA;
+    const bool                graded;
+    std::vector<double>       area, boundaries;
+    std::pair<double, double> grid_edges{0., 0.};
+    double                    margin_factor = 0.5;
+    // Counts the grids made, so that a secant predictor spans one grid.
+    unsigned int                      grid_generation = 0;
     std::array<unsigned int, dim - 1> shape{};
     Parameters::Substrate             substrate;
     double                            thickness;

@@ -9,7 +9,6 @@
 
 #include <viscoslide/boundary_element/solver.h>
 
-#include <numeric>
 
 namespace viscoslide
 {
@@ -24,13 +23,16 @@ namespace viscoslide
   class BoundaryElementSolver<dim>::WindowPreconditioner
   {
   public:
-    WindowPreconditioner(const SurfaceCompliance<dim> &compliance,
-                         const Vector<double>         &tangent,
-                         const double                  dashpot,
-                         const unsigned int            first,
-                         const unsigned int            m,
-                         const bool                    force,
-                         const double                  force_scale)
+    // The window [first, first + m) of the points whose areas are `area`;
+    // the load row in units of sigma_max.
+    WindowPreconditioner(const Compliance          &compliance,
+                         const Vector<double>      &tangent,
+                         const double               dashpot,
+                         const unsigned int         first,
+                         const unsigned int         m,
+                         const bool                 force,
+                         const std::vector<double> &area,
+                         const double               sigma_max)
       : compliance(compliance)
       , first(first)
       , m(m)
@@ -39,30 +41,29 @@ namespace viscoslide
       , load_weight(m)
       , lu(m + 1, m + 1)
     {
-      const Vector<double> column = compliance.impulse_response();
-      const unsigned int   n      = column.size();
+      const FullMatrix<double> c = compliance.block(first, m);
       for (unsigned int j = 0; j < m; ++j)
         {
           weight[j]      = tangent[first + j] + dashpot;
           load_weight[j] = tangent[first + j];
         }
+      double corner = 0;
       for (unsigned int i = 0; i < m; ++i)
         {
           double border = 0;
           for (unsigned int j = 0; j < m; ++j)
             {
-              const double c = column[(i + n - j) % n];
-              lu(i, j)       = (i == j ? 1. : 0.) + c * weight[j];
-              border += c * load_weight[j];
+              lu(i, j) = (i == j ? 1. : 0.) + c(i, j) * weight[j];
+              border += c(i, j) * load_weight[j];
             }
-          lu(i, m) = force ? border : 0.;
-          lu(m, i) = force ? load_weight[i] / force_scale : 0.;
+          const double load = load_weight[i] / (sigma_max / area[first + i]);
+          lu(i, m)          = force ? border : 0.;
+          lu(m, i)          = force ? load : 0.;
+          corner += load;
         }
       // Without a stiff point (no contact) the load row is empty: the
       // identity there keeps the factorization regular.
-      const double corner =
-        std::accumulate(load_weight.begin(), load_weight.end(), 0.);
-      lu(m, m) = force && corner != 0. ? corner / force_scale : 1.;
+      lu(m, m) = force && corner != 0. ? corner : 1.;
       lu.compute_lu_factorization();
     }
 
@@ -100,10 +101,10 @@ namespace viscoslide
     }
 
   private:
-    const SurfaceCompliance<dim> &compliance;
-    const unsigned int            first, m;
-    const bool                    force;
-    Vector<double>                weight, load_weight;
+    const Compliance  &compliance;
+    const unsigned int first, m;
+    const bool         force;
+    Vector<double>     weight, load_weight;
     // Single precision: as a preconditioner it need not be exact, and both
     // the factorization and the solves (which read the whole factor from
     // memory) take half the time.

@@ -34,7 +34,7 @@ namespace viscoslide
     const auto spacing = [&](const unsigned int j) {
       return graded ? x[next(j)] - x[j] : dx;
     };
-    const double      gc = prm.adhesion.contact_gap * scales.eps;
+    const double      gc = prm.adhesion.contact_gap * law_range;
     SurfaceQuantities q{};
     q.minimum_gap = gaps.linfty_norm();
     q.x_trail     = std::numeric_limits<double>::infinity();

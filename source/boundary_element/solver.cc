@@ -45,6 +45,7 @@ namespace viscoslide
     , scales(parts.scales)
     , material(parts.material)
     , law(*parts.law)
+    , law_range(parts.scales.eps)
     , indenter(*parts.indenter)
     , writer(parts.writer)
     , steady_state_table(parts.steady_state_table)
@@ -185,13 +186,19 @@ namespace viscoslide
     const std::vector<double>       &new_boundaries,
     const std::pair<double, double> &edges)
   {
+    // The state carried over as its gaps: they vary on the scale of eps
+    // near the edges, while u varies by thousands of eps over the contact
+    // at R_hat 1e6, where interpolated displacements would put points deep
+    // into the repulsive wall.
     const std::vector<double> old_x = x;
-    const Vector<double>      old_u = u;
-    boundaries                      = new_boundaries;
-    grid_edges                      = edges;
-    const unsigned int n            = boundaries.size() - 1;
-    shape[dim - 2]                  = n;
-    compliance = std::make_unique<GradedCompliance>(material,
+    std::vector<double>       old_gap(old_x.size());
+    for (unsigned int j = 0; j < old_x.size(); ++j)
+      old_gap[j] = scales.eps + h[j] - delta - u[j];
+    boundaries           = new_boundaries;
+    grid_edges           = edges;
+    const unsigned int n = boundaries.size() - 1;
+    shape[dim - 2]       = n;
+    compliance           = std::make_unique<GradedCompliance>(material,
                                                     prm.material.poisson_ratio,
                                                     boundaries,
                                                     thickness);
@@ -213,21 +220,23 @@ namespace viscoslide
         // Linear between the old points, beyond them the nearer end's.
         const auto k =
           std::upper_bound(old_x.begin(), old_x.end(), x[j]) - old_x.begin();
+        double gap;
         if (k == 0)
-          u[j] = old_u[0];
+          gap = old_gap[0];
         else if (k == long(old_x.size()))
-          u[j] = old_u[old_x.size() - 1];
+          gap = old_gap[old_x.size() - 1];
         else
           {
             const double t = (x[j] - old_x[k - 1]) / (old_x[k] - old_x[k - 1]);
-            u[j]           = (1 - t) * old_u[k - 1] + t * old_u[k];
+            gap            = (1 - t) * old_gap[k - 1] + t * old_gap[k];
           }
+        u[j] = scales.eps + h[j] - delta - gap;
       }
     ++grid_generation;
     preconditioner.reset();
     pcout << "Graded boundary-element grid: " << n << " cells, " << dx
-          << " eps at the contact edges x/R = " << edges.first / scales.R
-          << ", " << edges.second / scales.R << ", window "
+          << " eps at the contact edges x = " << edges.first / scales.eps
+          << ", " << edges.second / scales.eps << " eps, window "
           << boundaries.front() / scales.eps << " to "
           << boundaries.back() / scales.eps << " eps" << std::endl;
   }
@@ -235,7 +244,7 @@ namespace viscoslide
 
   template <int dim>
   bool
-  BoundaryElementSolver<dim>::refit_graded_grid()
+  BoundaryElementSolver<dim>::refit_graded_grid(const bool always)
   {
     const unsigned int n     = u.size();
     const double       ratio = prm.boundary_element.grading_ratio;
@@ -247,7 +256,8 @@ namespace viscoslide
       1e-4 * scales.sigma_max;
     if (loaded_ends)
       margin_factor *= 2;
-    if (!loaded_ends && std::abs(trail - grid_edges.first) <= tolerance &&
+    if (!always && !loaded_ends &&
+        std::abs(trail - grid_edges.first) <= tolerance &&
         std::abs(lead - grid_edges.second) <= tolerance)
       return false;
     const double margin =
@@ -263,56 +273,137 @@ namespace viscoslide
   BoundaryElementSolver<dim>::start_from_jkr_contact()
   {
     // The JKR contact in plane strain (cylinder_jkr_half_width, grid.h) of
-    // the relaxed solid (E0* = 1): the pressure sqrt(a^2 - x^2)/(2R) -
-    // P_A/(pi sqrt(a^2 - x^2)), P_A = sqrt(2 pi dgamma a).
-    const double R = scales.R, dgamma = scales.dgamma;
+    // the relaxed solid (E0* = 1) gives the contact's width 2a.
     const double P = prm.loading.target_load * scales.force;
-    const double a = cylinder_jkr_half_width(P, dgamma, R);
+    const double a = cylinder_jkr_half_width(P, scales.dgamma, scales.R);
     if (!std::isfinite(a))
       throw Parameters::ExcInvalidInput(
         "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
         " is below the JKR pull-off force of the relaxed contact: "
         "'Boundary element/Grid' = graded starts from the JKR contact");
-    const double P_A    = std::sqrt(2 * M_PI * dgamma * a);
     const double margin = std::max(margin_factor * 2 * a, 50 * scales.eps);
-    const double ratio  = prm.boundary_element.grading_ratio;
-    make_graded_grid(graded_boundaries(-a, a, dx, ratio, margin), {-a, a});
-    // Each cell's mean of the JKR traction (attraction > 0).
-    const auto ellipse = [a](const double t) {
-      return 0.5 * (t * std::sqrt(a * a - t * t) + a * a * std::asin(t / a));
-    };
-    const unsigned int n = u.size();
-    Vector<double>     q(n);
-    for (unsigned int j = 0; j < n; ++j)
+    make_graded_grid(
+      graded_boundaries(-a, a, dx, prm.boundary_element.grading_ratio, margin),
+      {-a, a});
+    // On the grid, the traction of the cells |x_j| < a that holds their
+    // gap at eps (u_j = h_j - delta) under the load P, delta unknown: the
+    // discrete JKR contact, its adhesive edges from the width alone. The
+    // displacements are thousands of eps at R_hat 1e6, so that the state
+    // must come from the grid's own compliance to be within a fraction of
+    // eps of an equilibrium.
+    std::vector<unsigned int> inside;
+    for (unsigned int j = 0; j < x.size(); ++j)
+      if (std::abs(x[j]) < a)
+        inside.push_back(j);
+    const unsigned int       m     = inside.size();
+    const FullMatrix<double> c_all = compliance->block(0, x.size());
+    LAPACKFullMatrix<double> system(m + 1, m + 1);
+    Vector<double>           rhs(m + 1);
+    for (unsigned int i = 0; i < m; ++i)
       {
-        const double c0 = std::max(boundaries[j], -a),
-                     c1 = std::min(boundaries[j + 1], a);
-        if (c1 <= c0)
-          continue;
-        const double hertz = (ellipse(c1) - ellipse(c0)) / (2 * R);
-        const double adhesion =
-          P_A / M_PI * (std::asin(c1 / a) - std::asin(c0 / a));
-        q[j] = -(hertz - adhesion) / area[j];
+        for (unsigned int j = 0; j < m; ++j)
+          system(i, j) = c_all(inside[i], inside[j]);
+        system(i, m) = 1.;
+        system(m, i) = -area[inside[i]] / scales.sigma_max;
+        rhs[i]       = h[inside[i]];
       }
+    rhs[m] = P / scales.sigma_max;
+    system.compute_lu_factorization();
+    system.solve(rhs);
+    Vector<double> q(x.size());
+    for (unsigned int i = 0; i < m; ++i)
+      q[inside[i]] = rhs[i];
+    delta = rhs[m];
     compliance->apply(q, u);
-    // delta such that the gap at the apex is eps.
-    const unsigned int apex =
-      std::min_element(x.begin(),
-                       x.end(),
-                       [](const double p, const double r) {
-                         return std::abs(p) < std::abs(r);
-                       }) -
-      x.begin();
-    delta = h[apex] - u[apex];
+    // Newton's method from this contact converges for Tabor parameters up
+    // to about 10, and crawls beyond (the adhesive zone must form at each
+    // edge, a short-range jump). A larger one is reached by continuation
+    // in the law's range: the same law with range l > eps and the same
+    // dgamma, so that the contact is nearly the same (JKR's depends on
+    // dgamma alone) while the zone is l^(3/2) times wider; l then shrinks
+    // to eps in steps of 0.7, each equilibrium the start of the next.
+    const double tabor = std::cbrt(scales.R * scales.dgamma * scales.dgamma /
+                                   std::pow(scales.eps, 3));
+    double range = scales.eps * std::max(1., tabor / start_tabor_parameter);
+    set_law_range(range);
+    // The contact at the law's equilibrium gap, the range.
+    delta -= range - scales.eps;
+    // Inside, the gap at which the law gives that traction (at most its
+    // peak), so that the residual u - C q(g) starts small.
+    for (const unsigned int j : inside)
+      u[j] = scales.eps + h[j] - delta - gap_for_traction(q[j], range);
     control.hold_force(P);
     pcout << "Start: the JKR contact of the relaxed solid at F_hat = "
-          << prm.loading.target_load << ", L_hat = " << 2 * a / scales.R
-          << std::endl;
-    if (solve() < 0)
-      throw std::runtime_error(
-        "the boundary-element solver found no equilibrium from the JKR "
-        "contact at the Target load (Newton's method and the relaxation "
-        "did not converge on the graded grid)");
+          << prm.loading.target_load << ", L_hat = " << 2 * a / scales.R;
+    if (range > scales.eps)
+      pcout << ", the law's range from " << range / scales.eps << " eps";
+    pcout << std::endl;
+    for (;;)
+      {
+        if (solve() < 0)
+          throw std::runtime_error(
+            "the boundary-element solver found no equilibrium from the JKR "
+            "contact at the Target load (Newton's method and the relaxation "
+            "did not converge on the graded grid at the law's range " +
+            CsvTable::format(range / scales.eps) + " eps)");
+        if (range == scales.eps)
+          return;
+        // The contact's gap shrinks with the range: delta follows, so that
+        // the next law finds the contact at its own equilibrium gap.
+        // and where the surfaces are nearer than the law's peak the new law
+        // gives the traction of the old one (the wall's stiffness grows as
+        // 1/range^2: at the old gaps the pressure under the contact would
+        // jump).
+        const double next = std::max(scales.eps, 0.7 * range);
+        const double peak = gap_for_traction(1e300, range);
+        delta += range - next;
+        for (unsigned int j = 0; j < u.size(); ++j)
+          if (gaps[j] < peak)
+            u[j] =
+              scales.eps + h[j] - delta - gap_for_traction(traction[j], next);
+        range = next;
+        set_law_range(range);
+        pcout << "  the law's range " << range / scales.eps << " eps, "
+              << u.size() << " cells, L_hat = "
+              << last_quantities.contact_length / scales.contact << std::endl;
+      }
+  }
+
+
+  template <int dim>
+  double
+  BoundaryElementSolver<dim>::gap_for_traction(const double q,
+                                               const double range) const
+  {
+    // The law with that range, rising from its repulsive wall through 0 at
+    // the range to its peak: the gap of traction q there, the peak's if q
+    // is above it.
+    std::unique_ptr<InteractionLaw> ranged =
+      create_interaction_law(prm.adhesion.law, scales.dgamma, range);
+    double peak = range;
+    for (double g = range; g < 3 * range; g += 1e-3 * range)
+      if (ranged->traction(g) > ranged->traction(peak))
+        peak = g;
+    double lo = 0.2 * range, hi = peak;
+    for (unsigned int k = 0; k < 100; ++k)
+      {
+        const double mid                      = 0.5 * (lo + hi);
+        (ranged->traction(mid) < q ? lo : hi) = mid;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::set_law_range(const double range)
+  {
+    law_range = range;
+    ranged_law.reset();
+    if (range != scales.eps)
+      ranged_law =
+        create_interaction_law(prm.adhesion.law, scales.dgamma, range);
+    preconditioner.reset();
   }
 
 
@@ -370,8 +461,8 @@ namespace viscoslide
     for (unsigned int j = 0; j < n; ++j)
       {
         gaps[j]     = scales.eps + h[j] - delta - u[j];
-        traction[j] = law.traction(gaps[j]);
-        tangent[j]  = law.derivative(gaps[j]);
+        traction[j] = traction_law().traction(gaps[j]);
+        tangent[j]  = traction_law().derivative(gaps[j]);
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
         Fn -= traction[j] * area[j];
       }
@@ -437,7 +528,8 @@ namespace viscoslide
                                                      m,
                                                      control.force_controlled,
                                                      area,
-                                                     scales.sigma_max);
+                                                     scales.sigma_max,
+                                                     graded);
             work_since_factorization   = factorization_work(m);
             solves_since_factorization = 1;
             last_gmres_work            = 0.;
@@ -578,7 +670,7 @@ namespace viscoslide
     const Vector<double>      old_u          = u;
     const double              old_delta      = delta;
     const auto                old_edges      = grid_edges;
-    for (unsigned int k = 0; k < 8 && refit_graded_grid(); ++k)
+    for (unsigned int k = 0; k < 8 && refit_graded_grid(false); ++k)
       {
         const int more = solve_on_grid();
         if (more < 0)
@@ -618,7 +710,7 @@ namespace viscoslide
     // approach does.
     assemble(false);
     const bool in_contact = *std::min_element(gaps.begin(), gaps.end()) <
-                            prm.adhesion.contact_gap * scales.eps;
+                            prm.adhesion.contact_gap * law_range;
     int its = in_contact ? newton(problem,
                                   prm.solver.max_newton_iterations,
                                   prm.solver.line_search,

@@ -130,14 +130,33 @@ namespace viscoslide
     make_graded_grid(const std::vector<double>       &new_boundaries,
                      const std::pair<double, double> &edges);
     // Whether the contact edges of the present state lie where the
-    // graded grid's cells are finest; if not, a new grid about them.
-    // [solver.cc]
+    // graded grid's cells are finest (and no traction reaches its ends);
+    // if not, or `always`, a new grid about them. Returns whether it made
+    // one. [solver.cc]
     bool
-    refit_graded_grid();
+    refit_graded_grid(bool always);
     // The graded grid's start: the JKR contact of the relaxed solid at the
     // Target load, solved with the traction law. [solver.cc]
     void
     start_from_jkr_contact();
+    // The start's continuation in the traction law's range
+    // (start_from_jkr_contact): the law of the case with range `range`
+    // and the same dgamma; the case's own at eps. [solver.cc]
+    void
+    set_law_range(double range);
+    // The gap at which the law with `range` gives the traction q, on its
+    // branch from the repulsive wall to its peak (the peak's gap for q
+    // above the peak). [solver.cc]
+    double
+    gap_for_traction(double q, double range) const;
+    const InteractionLaw &
+    traction_law() const
+    {
+      return ranged_law ? *ranged_law : law;
+    }
+    // The Tabor parameter up to which Newton's method converges from the
+    // discrete JKR contact.
+    static constexpr double start_tabor_parameter = 8;
     // In 3D a half-space is the isolated contact's (isolated_compliance.h),
     // a layer periodic. [solver.cc]
     bool
@@ -210,6 +229,8 @@ namespace viscoslide
     const Scales                    &scales;
     const ViscoelasticSolid         &material;
     const InteractionLaw            &law;
+    std::unique_ptr<InteractionLaw>  ranged_law;
+    double                           law_range; // eps but in the start
     const Indenter                  &indenter;
     OutputWriter                    &writer;
     SteadyStateTable                &steady_state_table;

@@ -174,14 +174,29 @@ namespace viscoslide
       const double softest = std::min(1., 1. / p.material.E0_over_Einf);
       const double zone =
         M_PI / 8 * softest * s.dgamma / std::pow(s.sigma_max, 2);
+      // The boundary elements resolve the zone with their grid spacing.
+      const bool boundary_elements =
+        p.sliding.solver == SlidingSolver::boundary_element;
+      const double cell = !boundary_elements ? p.mesh.finest_cell
+                          : p.boundary_element.grid_spacing > 0
+                            ? p.boundary_element.grid_spacing
+                            : p.mesh.finest_cell / 2;
       if (p.adhesion.adhesive() && p.adhesion.tabor_parameter > 0 &&
-          p.mesh.finest_cell > zone / 2)
+          cell > zone / 2)
         {
           std::ostringstream note;
-          note << "Warning: 'Mesh/Finest surface cell' = " << p.mesh.finest_cell
-               << " eps is coarser than half the adhesive zone (about " << zone
-               << " eps); expect the contact edges and the friction "
+          note << "Warning: "
+               << (boundary_elements ? "'Boundary element/Grid spacing' = "
+                                     : "'Mesh/Finest surface cell' = ")
+               << cell << " eps is coarser than half the adhesive zone (about "
+               << zone << " eps); expect the contact edges and the friction "
                << "to be off by several percent";
+          if (p.geometry.dimension == 2 &&
+              p.boundary_element.grid != GridKind::graded)
+            note << " (plane strain on a half-plane: 'Sliding/Solver' = "
+                    "boundary-element with 'Boundary element/Grid' = graded "
+                    "resolves the zone at any R over eps, doc/"
+                    "boundary_element.md)";
           p.notes.push_back(note.str());
         }
       // The finite elements resolve the arms' relaxation over a cell at

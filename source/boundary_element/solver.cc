@@ -349,9 +349,9 @@ namespace viscoslide
         if (range == scales.eps)
           return;
         // The contact's gap shrinks with the range: delta follows, so that
-        // the next law finds the contact at its own equilibrium gap.
-        // and where the surfaces are nearer than the law's peak the new law
-        // gives the traction of the old one (the wall's stiffness grows as
+        // the next law finds the contact at its own equilibrium gap; where
+        // the surfaces are nearer than the old law's peak, the gap is where
+        // the new law gives the old traction (the wall's stiffness grows as
         // 1/range^2: at the old gaps the pressure under the contact would
         // jump).
         const double next = std::max(scales.eps, 0.7 * range);

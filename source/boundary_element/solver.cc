@@ -183,8 +183,9 @@ namespace viscoslide
   template <int dim>
   void
   BoundaryElementSolver<dim>::make_graded_grid(
-    const std::vector<double>       &new_boundaries,
-    const std::pair<double, double> &edges)
+    const std::vector<double>           &new_boundaries,
+    const std::pair<double, double>     &edges,
+    const std::function<double(double)> &shift)
   {
     // The state carried over as its gaps: they vary on the scale of eps
     // near the edges, while u varies by thousands of eps over the contact
@@ -218,8 +219,9 @@ namespace viscoslide
         if (old_x.empty())
           continue;
         // Linear between the old points, beyond them the nearer end's.
-        const auto k =
-          std::upper_bound(old_x.begin(), old_x.end(), x[j]) - old_x.begin();
+        const double from = shift ? x[j] - shift(x[j]) : x[j];
+        const auto   k =
+          std::upper_bound(old_x.begin(), old_x.end(), from) - old_x.begin();
         double gap;
         if (k == 0)
           gap = old_gap[0];
@@ -227,7 +229,7 @@ namespace viscoslide
           gap = old_gap[old_x.size() - 1];
         else
           {
-            const double t = (x[j] - old_x[k - 1]) / (old_x[k] - old_x[k - 1]);
+            const double t = (from - old_x[k - 1]) / (old_x[k] - old_x[k - 1]);
             gap            = (1 - t) * old_gap[k - 1] + t * old_gap[k];
           }
         u[j] = scales.eps + h[j] - delta - gap;
@@ -239,6 +241,42 @@ namespace viscoslide
           << ", " << edges.second / scales.eps << " eps, window "
           << boundaries.front() / scales.eps << " to "
           << boundaries.back() / scales.eps << " eps" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::predict_graded_grid(
+    const std::pair<double, double> &edges,
+    const std::pair<double, double> &edges_before,
+    const double                     ratio)
+  {
+    if (!(std::abs(ratio) <= 2) || edges.second <= edges.first)
+      return;
+    const double trail =
+                   edges.first + ratio * (edges.first - edges_before.first),
+                 lead =
+                   edges.second + ratio * (edges.second - edges_before.second);
+    if (!(lead > trail))
+      return;
+    const double shift_trail = trail - edges.first,
+                 shift_lead  = lead - edges.second;
+    // Each edge's zone moved with its edge; between them the shift varies
+    // linearly.
+    const auto shift = [&](const double x) {
+      const double t =
+        std::clamp((x - edges.first) / (edges.second - edges.first), 0., 1.);
+      return shift_trail + t * (shift_lead - shift_trail);
+    };
+    const double margin =
+      std::max(margin_factor * (lead - trail), 50 * scales.eps);
+    make_graded_grid(graded_boundaries(trail,
+                                       lead,
+                                       dx,
+                                       prm.boundary_element.grading_ratio,
+                                       margin),
+                     {trail, lead},
+                     shift);
   }
 
 
@@ -748,14 +786,25 @@ namespace viscoslide
     double         at_before = 0, delta_before = 0;
     Vector<double> u_before;
     unsigned int   generation_before = 0;
+    // The graded grid's contact edges at the step before, for their secant.
+    std::pair<double, double> edges_before;
+    bool                      have_edges_before = false;
     while (at != to)
       {
         const bool           last = std::abs(to - at) <= size * (1 + 1e-9);
         const double         next = last ? to : at + (to > at ? size : -size);
         const Vector<double> u_at = u;
-        const double         delta_at      = delta;
-        const unsigned int   generation_at = grid_generation;
+        const double         delta_at                 = delta;
+        const unsigned int   generation_at            = grid_generation;
+        const std::vector<double>       boundaries_at = boundaries;
+        const std::pair<double, double> grid_edges_at = grid_edges;
+        const std::pair<double, double> edges_at{last_quantities.x_trail,
+                                                 last_quantities.x_lead};
         set(next);
+        if (graded && have_edges_before)
+          predict_graded_grid(edges_at,
+                              edges_before,
+                              (next - at) / (at - at_before));
         // Secant predictor from the step before, then no predicted gap
         // below the smaller of its present one and eps: a point that the
         // step before drew into contact would otherwise be extrapolated
@@ -769,7 +818,9 @@ namespace viscoslide
         const bool secant = ratio != 0. && std::abs(ratio) <= 2;
         if (secant && control.force_controlled)
           delta += ratio * (delta_at - delta_before);
-        for (unsigned int j = 0; j < u.size(); ++j)
+        for (unsigned int j = 0;
+             generation_at == grid_generation && j < u.size();
+             ++j)
           {
             if (secant)
               u[j] += ratio * (u_at[j] - u_before[j]);
@@ -784,6 +835,8 @@ namespace viscoslide
             u_before          = u_at;
             delta_before      = delta_at;
             generation_before = generation_at;
+            edges_before      = edges_at;
+            have_edges_before = graded;
             at                = next;
             on_converged();
             if (done())
@@ -791,6 +844,8 @@ namespace viscoslide
             size = std::min(step, 2 * size);
             continue;
           }
+        if (graded)
+          make_graded_grid(boundaries_at, grid_edges_at);
         u     = u_at;
         delta = delta_at;
         set(at);

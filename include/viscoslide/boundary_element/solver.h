@@ -125,10 +125,22 @@ namespace viscoslide
     void
     make_grid(const std::array<unsigned int, dim - 1> &shape);
     // The graded grid of cells between `boundaries`, made for contact
-    // edges at `edges`, the state interpolated onto it. [solver.cc]
+    // edges at `edges`, the state's gaps interpolated onto it (from x -
+    // shift(x) if given). [solver.cc]
     void
-    make_graded_grid(const std::vector<double>       &new_boundaries,
-                     const std::pair<double, double> &edges);
+    make_graded_grid(const std::vector<double>           &new_boundaries,
+                     const std::pair<double, double>     &edges,
+                     const std::function<double(double)> &shift = {});
+    // The predictor of a continuation step on the graded grid: the edges
+    // extrapolated from the two steps before (`ratio` the step's length
+    // over the last one's), a grid about them, and the state's gaps moved
+    // with the edges, so that each edge's adhesive zone arrives whole
+    // where it is predicted (the secant of u at fixed x would smear it).
+    // [solver.cc]
+    void
+    predict_graded_grid(const std::pair<double, double> &edges,
+                        const std::pair<double, double> &edges_before,
+                        double                           ratio);
     // Whether the contact edges of the present state lie where the
     // graded grid's cells are finest (and no traction reaches its ends);
     // if not, or `always`, a new grid about them. Returns whether it made

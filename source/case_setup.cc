@@ -334,13 +334,10 @@ namespace viscoslide
       require(p.loading.has_target_load() && !p.loading.retract,
               what + " needs a 'Loading/Target load' and no retraction: "
                      "it starts from the JKR contact at that load");
-      // Internal units: eps = E0* = 1.
-      const double R = p.adhesion.R_over_eps;
-      const double dgamma =
-        std::sqrt(std::pow(p.adhesion.tabor_parameter, 3) / R);
-      const double P =
-        p.loading.target_load * std::cbrt(M_PI * dgamma * dgamma * R);
-      const double a = cylinder_jkr_half_width(P, dgamma, R);
+      // Internal units (eps = E0* = 1), as the solver's.
+      const Scales s(p);
+      const double a =
+        cylinder_jkr_half_width(p.loading.target_load * s.force, s.dgamma, s.R);
       require(std::isfinite(a),
               entry("Loading", "Target load", p.loading.target_load) +
                 " is below the JKR pull-off force of the relaxed contact, "

@@ -268,6 +268,17 @@ namespace viscoslide
         std::clamp((x - edges.first) / (edges.second - edges.first), 0., 1.);
       return shift_trail + t * (shift_lead - shift_trail);
     };
+    make_graded_grid_about(trail, lead, shift);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::make_graded_grid_about(
+    const double                         trail,
+    const double                         lead,
+    const std::function<double(double)> &shift)
+  {
     const double margin =
       std::max(margin_factor * (lead - trail), 50 * scales.eps);
     make_graded_grid(graded_boundaries(trail,
@@ -298,10 +309,7 @@ namespace viscoslide
         std::abs(trail - grid_edges.first) <= tolerance &&
         std::abs(lead - grid_edges.second) <= tolerance)
       return false;
-    const double margin =
-      std::max(margin_factor * (lead - trail), 50 * scales.eps);
-    make_graded_grid(graded_boundaries(trail, lead, dx, ratio, margin),
-                     {trail, lead});
+    make_graded_grid_about(trail, lead);
     return true;
   }
 
@@ -319,38 +327,35 @@ namespace viscoslide
         "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
         " is below the JKR pull-off force of the relaxed contact: "
         "'Boundary element/Grid' = graded starts from the JKR contact");
-    const double margin = std::max(margin_factor * 2 * a, 50 * scales.eps);
-    make_graded_grid(
-      graded_boundaries(-a, a, dx, prm.boundary_element.grading_ratio, margin),
-      {-a, a});
+    make_graded_grid_about(-a, a);
     // On the grid, the traction of the cells |x_j| < a that holds their
     // gap at eps (u_j = h_j - delta) under the load P, delta unknown: the
     // discrete JKR contact, its adhesive edges from the width alone. The
     // displacements are thousands of eps at R_hat 1e6, so that the state
     // must come from the grid's own compliance to be within a fraction of
     // eps of an equilibrium.
-    std::vector<unsigned int> inside;
-    for (unsigned int j = 0; j < x.size(); ++j)
-      if (std::abs(x[j]) < a)
-        inside.push_back(j);
-    const unsigned int       m     = inside.size();
-    const FullMatrix<double> c_all = compliance->block(0, x.size());
+    // Those cells are the contiguous [first, first + m) of the sorted x.
+    const unsigned int first =
+      std::lower_bound(x.begin(), x.end(), -a) - x.begin();
+    const unsigned int m =
+      std::lower_bound(x.begin(), x.end(), a) - x.begin() - first;
+    const FullMatrix<double> c = compliance->block(first, m);
     LAPACKFullMatrix<double> system(m + 1, m + 1);
     Vector<double>           rhs(m + 1);
     for (unsigned int i = 0; i < m; ++i)
       {
         for (unsigned int j = 0; j < m; ++j)
-          system(i, j) = c_all(inside[i], inside[j]);
+          system(i, j) = c(i, j);
         system(i, m) = 1.;
-        system(m, i) = -area[inside[i]] / scales.sigma_max;
-        rhs[i]       = h[inside[i]];
+        system(m, i) = -area[first + i] / scales.sigma_max;
+        rhs[i]       = h[first + i];
       }
     rhs[m] = P / scales.sigma_max;
     system.compute_lu_factorization();
     system.solve(rhs);
     Vector<double> q(x.size());
     for (unsigned int i = 0; i < m; ++i)
-      q[inside[i]] = rhs[i];
+      q[first + i] = rhs[i];
     delta = rhs[m];
     compliance->apply(q, u);
     // Newton's method from this contact converges for Tabor parameters up
@@ -360,16 +365,17 @@ namespace viscoslide
     // dgamma, so that the contact is nearly the same (JKR's depends on
     // dgamma alone) while the zone is l^(3/2) times wider; l then shrinks
     // to eps in steps of 0.7, each equilibrium the start of the next.
-    const double tabor = std::cbrt(scales.R * scales.dgamma * scales.dgamma /
-                                   std::pow(scales.eps, 3));
-    double range = scales.eps * std::max(1., tabor / start_tabor_parameter);
+    double range =
+      scales.eps *
+      std::max(1., prm.adhesion.tabor_parameter / start_tabor_parameter);
     set_law_range(range);
     // The contact at the law's equilibrium gap, the range.
     delta -= range - scales.eps;
     // Inside, the gap at which the law gives that traction (at most its
     // peak), so that the residual u - C q(g) starts small.
-    for (const unsigned int j : inside)
-      u[j] = scales.eps + h[j] - delta - gap_for_traction(q[j], range);
+    const auto start_gap = gap_for_traction(traction_law(), range);
+    for (unsigned int j = first; j < first + m; ++j)
+      u[j] = scales.eps + h[j] - delta - start_gap(q[j]);
     control.hold_force(P);
     pcout << "Start: the JKR contact of the relaxed solid at F_hat = "
           << prm.loading.target_load << ", L_hat = " << 2 * a / scales.R;
@@ -393,14 +399,14 @@ namespace viscoslide
         // 1/range^2: at the old gaps the pressure under the contact would
         // jump).
         const double next = std::max(scales.eps, 0.7 * range);
-        const double peak = gap_for_traction(1e300, range);
+        const double peak = gap_for_traction(traction_law(), range)(1e300);
+        set_law_range(next);
+        const auto next_gap = gap_for_traction(traction_law(), next);
         delta += range - next;
         for (unsigned int j = 0; j < u.size(); ++j)
           if (gaps[j] < peak)
-            u[j] =
-              scales.eps + h[j] - delta - gap_for_traction(traction[j], next);
+            u[j] = scales.eps + h[j] - delta - next_gap(traction[j]);
         range = next;
-        set_law_range(range);
         pcout << "  the law's range " << range / scales.eps << " eps, "
               << u.size() << " cells, L_hat = "
               << last_quantities.contact_length / scales.contact << std::endl;
@@ -409,26 +415,25 @@ namespace viscoslide
 
 
   template <int dim>
-  double
-  BoundaryElementSolver<dim>::gap_for_traction(const double q,
+  std::function<double(double)>
+  BoundaryElementSolver<dim>::gap_for_traction(const InteractionLaw &law,
                                                const double range) const
   {
-    // The law with that range, rising from its repulsive wall through 0 at
-    // the range to its peak: the gap of traction q there, the peak's if q
-    // is above it.
-    std::unique_ptr<InteractionLaw> ranged =
-      create_interaction_law(prm.adhesion.law, scales.dgamma, range);
+    // The law rises from its repulsive wall through 0 at the range to its
+    // peak: found once, then each traction's gap by bisection below it.
     double peak = range;
     for (double g = range; g < 3 * range; g += 1e-3 * range)
-      if (ranged->traction(g) > ranged->traction(peak))
+      if (law.traction(g) > law.traction(peak))
         peak = g;
-    double lo = 0.2 * range, hi = peak;
-    for (unsigned int k = 0; k < 100; ++k)
-      {
-        const double mid                      = 0.5 * (lo + hi);
-        (ranged->traction(mid) < q ? lo : hi) = mid;
-      }
-    return 0.5 * (lo + hi);
+    return [&law, range, peak](const double q) {
+      double lo = 0.2 * range, hi = peak;
+      for (unsigned int k = 0; k < 100; ++k)
+        {
+          const double mid                  = 0.5 * (lo + hi);
+          (law.traction(mid) < q ? lo : hi) = mid;
+        }
+      return 0.5 * (lo + hi);
+    };
   }
 
 

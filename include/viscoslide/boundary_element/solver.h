@@ -131,6 +131,13 @@ namespace viscoslide
     make_graded_grid(const std::vector<double>           &new_boundaries,
                      const std::pair<double, double>     &edges,
                      const std::function<double(double)> &shift = {});
+    // make_graded_grid about contact edges at trail and lead, the grid
+    // reaching margin_factor times the contact's width (at least 50 eps)
+    // beyond each. [solver.cc]
+    void
+    make_graded_grid_about(double                               trail,
+                           double                               lead,
+                           const std::function<double(double)> &shift = {});
     // The predictor of a continuation step on the graded grid: the edges
     // extrapolated from the two steps before (`ratio` the step's length
     // over the last one's), a grid about them, and the state's gaps moved
@@ -156,11 +163,12 @@ namespace viscoslide
     // and the same dgamma; the case's own at eps. [solver.cc]
     void
     set_law_range(double range);
-    // The gap at which the law with `range` gives the traction q, on its
-    // branch from the repulsive wall to its peak (the peak's gap for q
-    // above the peak). [solver.cc]
-    double
-    gap_for_traction(double q, double range) const;
+    // The gap at which `law`, of range `range`, gives a traction q, on
+    // its branch from the repulsive wall to its peak (the peak's gap for q
+    // above the peak), as a function of q; `law` must outlive it.
+    // [solver.cc]
+    std::function<double(double)>
+    gap_for_traction(const InteractionLaw &law, double range) const;
     const InteractionLaw &
     traction_law() const
     {

@@ -54,8 +54,10 @@ namespace viscoslide
     {
       // A uniform surface would grow with the block; the 3D boundary
       // elements have no block (an isolated half-space, or a layer whose
-      // period follows the wake).
+      // period follows the wake), nor has the graded grid (its wake is in
+      // closed form, the Domain height only the reference of delta).
       if (p.geometry.dimension == 3 ||
+          p.boundary_element.grid == GridKind::graded ||
           p.sliding.solver == SlidingSolver::transient ||
           p.geometry.wake_lengths == 0 || p.sliding.speeds.empty() ||
           p.mesh.uniform_surface)
@@ -107,6 +109,16 @@ namespace viscoslide
     void
     check_mesh_can_hold_case(const AllParameters &p)
     {
+      // The graded grid builds no mesh: check_graded_grid judges its case.
+      const bool graded_only =
+        p.boundary_element.grid == GridKind::graded &&
+        std::all_of(p.sweep.solvers.begin(),
+                    p.sweep.solvers.end(),
+                    [](const SlidingSolver s) {
+                      return s == SlidingSolver::boundary_element;
+                    });
+      if (graded_only && p.sliding.solver == SlidingSolver::boundary_element)
+        return;
       const double      W = p.geometry.domain_width, H = p.geometry.height();
       const std::string block =
         "the block of " + num(W) + " x " + num(H) + " eps";

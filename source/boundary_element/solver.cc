@@ -879,16 +879,25 @@ namespace viscoslide
     if (V_hat == 0)
       {
         // From the relaxed state: directly, or else from the speed whose
-        // relaxation length is a tenth of the grid spacing.
-        set_speed(std::log(target));
-        if (solve() >= 0)
+        // relaxation length is a tenth of the grid spacing for the slowest
+        // arm (a spectrum's may be decades slower than the time unit of
+        // V_hat). A graded grid's contact is thousands of eps wide, and
+        // the creep at its edges moves them by many cells in a direct
+        // jump, where Newton's method fails and the relaxation takes
+        // minutes: it starts slow.
+        if (!graded)
           {
-            on_converged();
-            return true;
+            set_speed(std::log(target));
+            if (solve() >= 0)
+              {
+                on_converged();
+                return true;
+              }
           }
-        const double start =
-          std::min(target,
-                   0.1 * dx / (scales.eps / scales.tau_ref * scales.tau_arm));
+        const double start = std::min(target,
+                                      0.1 * dx /
+                                        (scales.eps / scales.tau_ref *
+                                         material.longest_relaxation_time()));
         set_speed(std::log(start));
         if (solve() < 0)
           {

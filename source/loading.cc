@@ -220,8 +220,8 @@ namespace viscoslide
                         "successive speeds of the continuation from the "
                         "relaxed state to Sliding speed (halved in log "
                         "scale when Newton fails). It starts at the speed "
-                        "whose relaxation length V tau is a tenth of the "
-                        "finest surface cell.");
+                        "whose relaxation length V tau, of the slowest arm, "
+                        "is a tenth of the finest surface cell.");
       prm.declare_entry("Viscous strain degree",
                         "1",
                         Patterns::Integer(),

@@ -907,12 +907,21 @@ namespace viscoslide
           }
         on_converged();
       }
+    // A line per step short of the target: from a slow start the
+    // continuation crosses decades before the first station.
+    const auto report = [&] {
+      if (V_hat != target)
+        pcout << "  continuation: V_hat " << V_hat << " on the way to "
+              << target << " (" << last_newton_iterations
+              << " Newton iterations)" << std::endl;
+      on_converged();
+    };
     return follow(std::log(V_hat),
                   std::log(target),
                   std::log(prm.sliding.continuation_factor),
                   1e-3,
                   set_speed,
-                  on_converged);
+                  report);
   }
 
 

@@ -42,6 +42,28 @@ namespace viscoslide
                  ? std::cbrt(3. * F * s.R / (4. * E_star))
                  : std::sqrt(4. * F * s.R / (M_PI * E_star));
       }
+
+      // Whether every case runs the boundary elements: the solver, and
+      // every one a sweep lists.
+      bool
+      boundary_elements_only(const AllParameters &p)
+      {
+        return p.sliding.solver == SlidingSolver::boundary_element &&
+               std::all_of(p.sweep.solvers.begin(),
+                           p.sweep.solvers.end(),
+                           [](const SlidingSolver s) {
+                             return s == SlidingSolver::boundary_element;
+                           });
+      }
+
+      // Whether every case runs on the boundary elements' graded grid,
+      // which builds neither a block nor a mesh.
+      bool
+      graded_grid_only(const AllParameters &p)
+      {
+        return p.boundary_element.grid == GridKind::graded &&
+               boundary_elements_only(p);
+      }
     } // namespace
 
 
@@ -56,8 +78,7 @@ namespace viscoslide
       // elements have no block (an isolated half-space, or a layer whose
       // period follows the wake), nor has the graded grid (its wake is in
       // closed form, the Domain height only the reference of delta).
-      if (p.geometry.dimension == 3 ||
-          p.boundary_element.grid == GridKind::graded ||
+      if (p.geometry.dimension == 3 || graded_grid_only(p) ||
           p.sliding.solver == SlidingSolver::transient ||
           p.geometry.wake_lengths == 0 || p.sliding.speeds.empty() ||
           p.mesh.uniform_surface)
@@ -109,15 +130,8 @@ namespace viscoslide
     void
     check_mesh_can_hold_case(const AllParameters &p)
     {
-      // The graded grid builds no mesh: check_graded_grid judges its case.
-      const bool graded_only =
-        p.boundary_element.grid == GridKind::graded &&
-        std::all_of(p.sweep.solvers.begin(),
-                    p.sweep.solvers.end(),
-                    [](const SlidingSolver s) {
-                      return s == SlidingSolver::boundary_element;
-                    });
-      if (graded_only && p.sliding.solver == SlidingSolver::boundary_element)
+      // check_graded_grid judges a graded grid's case.
+      if (graded_grid_only(p))
         return;
       const double      W = p.geometry.domain_width, H = p.geometry.height();
       const std::string block =
@@ -428,13 +442,7 @@ namespace viscoslide
               "'Sweep/Solvers' with 'transient' needs a single 'Sliding/"
               "Sliding speed' (the transient solver runs each listed speed "
               "as a case of its own; the steady solvers follow the list)");
-      require(p.geometry.dimension == 2 ||
-                (p.sliding.solver == SlidingSolver::boundary_element &&
-                 std::all_of(p.sweep.solvers.begin(),
-                             p.sweep.solvers.end(),
-                             [](const SlidingSolver s) {
-                               return s == SlidingSolver::boundary_element;
-                             })),
+      require(p.geometry.dimension == 2 || boundary_elements_only(p),
               "'Geometry/Dimension' = 3 needs 'Sliding/Solver' = "
               "boundary-element (and no other in 'Sweep/Solvers'): the "
               "finite elements are plane strain");

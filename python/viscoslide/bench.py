@@ -12,6 +12,7 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
     scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
                                                steady_curve()
     scripts/bench_sphere [R_hat]               sphere_curve()
+    scripts/bench_transient [jobs] [prm ...]   transient_agreement()
 
 Each runs in the checkout (paths are relative to it, as the scripts'
 `cd` made them), builds it first with scripts/setup if there is no
@@ -263,8 +264,65 @@ def sphere_curve(argv):
     print(f'output in {work}/out')
 
 
+# The transient's resolved cases (tests/cross_validation_*.prm): V_hat 0.1
+# to 1000 at R_hat 400, muT 6.08, each on the mesh, step and window that
+# resolve it, under displacement and force control; the longest first, so
+# that the others share the second core.
+RESOLVED_CASES = ['tests/cross_validation_V1000.prm',
+                  'tests/cross_validation_V01.prm', 'tests/cross_validation_V01_force.prm',
+                  'tests/cross_validation_V1.prm', 'tests/cross_validation_quick.prm',
+                  'tests/cross_validation_V10_force.prm', 'tests/cross_validation_V100.prm',
+                  'tests/cross_validation_V100_force.prm']
+
+
+def transient_agreement(argv):
+    """Each file's study run by the transient and by the steady-state
+    solver, `jobs` single-process runs at a time (default 2): per file the
+    wall time of each solver, the distance the transient slid, and mu and
+    L_hat of both with their difference; at the end the wall time of the
+    whole set."""
+    prepare()
+    jobs = int(argv[0]) if argv else 2
+    files = argv[1:] or RESOLVED_CASES
+    work = tempfile.mkdtemp()
+    queue = [(f, solver) for f in files for solver in ('transient', 'steady-state')]
+    running, wall = [], {}
+    start = time.time()
+    while queue or running:
+        while queue and len(running) < jobs:
+            f, solver = queue.pop(0)
+            out = os.path.join(work, os.path.basename(f)[:-4] + '-' + solver)
+            path = prm.override_file(f, out + '.prm', {'Output/Output directory': out,
+                                                       'Sliding/Solver': solver})
+            log = open(out + '.log', 'w')
+            running.append(((f, solver), out, time.time(),
+                            subprocess.Popen([VISCOSLIDE, path], stdout=log,
+                                             stderr=subprocess.STDOUT)))
+        time.sleep(0.5)
+        for r in [r for r in running if r[3].poll() is not None]:
+            running.remove(r)
+            wall[r[0]] = (time.time() - r[2], r[1])
+            print(f'{os.path.basename(r[0][0])} {r[0][1]}: {wall[r[0]][0]:.1f} s', flush=True)
+    total = time.time() - start
+    print(f"\n{'file':<30} {'control':<12} {'V_hat':>6} {'distance':>9} {'wall_tr':>8} "
+          f"{'wall_ss':>8} {'mu_tr':>9} {'mu_ss':>9} {'d_mu':>8} {'L_tr':>9} {'L_ss':>9} {'d_L':>8}")
+    for f in files:
+        (t_tr, out_tr), (t_ss, out_ss) = wall[(f, 'transient')], wall[(f, 'steady-state')]
+        ss = {(r['control'], r['V_hat']): r for r in rows(os.path.join(out_ss, 'steady_state.csv'), False)}
+        for tr in rows(os.path.join(out_tr, 'steady_state.csv'), False):
+            s = ss.get((tr['control'], tr['V_hat']))
+            if s is None:
+                print(f'{os.path.basename(f):<30} no steady-state row: see {out_ss}.log')
+                continue
+            print(f"{os.path.basename(f)[:-4]:<30} {tr['control']:<12} {tr['V_hat']:6g} "
+                  f"{tr['sliding_distance_over_eps']:9.0f} {t_tr:8.1f} {t_ss:8.1f} "
+                  f"{tr['mu']:9.5g} {s['mu']:9.5g} {100 * (tr['mu'] / s['mu'] - 1):+7.2f}% "
+                  f"{tr['L_hat']:9.5g} {s['L_hat']:9.5g} {100 * (tr['L_hat'] / s['L_hat'] - 1):+7.2f}%")
+    print(f'\nthe whole set: {total:.1f} s with {jobs} runs at a time; outputs in {work}')
+
+
 COMMANDS = {'approach': approach, 'sliding': sliding, 'curve': curve, 'steady_curve': steady_curve,
-            'sphere_curve': sphere_curve}
+            'sphere_curve': sphere_curve, 'transient_agreement': transient_agreement}
 
 
 def main(argv=None):

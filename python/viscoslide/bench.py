@@ -267,7 +267,9 @@ def sphere_curve(argv):
 # The transient's resolved cases (tests/cross_validation_*.prm): V_hat 0.1
 # to 1000 at R_hat 400, muT 6.08, each on the mesh, step and window that
 # resolve it, under displacement and force control; the longest first, so
-# that the others share the second core.
+# that the others share the second core. V_hat 0.01
+# (tests/cross_validation_V001.prm, half an hour) and the Fig. 9b case
+# (tests/cross_validation_fig09b_V10.prm) run when named.
 RESOLVED_CASES = ['tests/cross_validation_V1000.prm',
                   'tests/cross_validation_V01.prm', 'tests/cross_validation_V01_force.prm',
                   'tests/cross_validation_V1.prm', 'tests/cross_validation_quick.prm',

@@ -65,6 +65,21 @@ namespace viscoslide
                boundary_elements_only(p);
       }
 
+      // The listed speeds (comma-separated; empty if none) at which the
+      // relaxation length V tau is shorter than `length`; tau in units of
+      // tau_ref, lengths in eps.
+      std::string
+      speeds_relaxing_within(const AllParameters &p,
+                             const double         tau,
+                             const double         length)
+      {
+        std::ostringstream speeds;
+        for (const double V_hat : p.sliding.speeds)
+          if (V_hat > 0 && V_hat * tau < length)
+            speeds << (speeds.tellp() > 0 ? ", " : "") << V_hat;
+        return speeds.str();
+      }
+
       // The transient's step: an adhesive edge that snaps within one step
       // dissipates at the step's rate, not the material's. At V_hat 0.01
       // (R_hat 400, muT 6.08, 0.25-eps cells) steps of 1.25, 6 and 25
@@ -77,14 +92,11 @@ namespace viscoslide
         if (p.sliding.solver != SlidingSolver::transient ||
             !p.adhesion.adhesive())
           return;
-        const double       step = p.sliding.increment * p.mesh.finest_cell;
-        std::ostringstream coarse;
-        for (const double V_hat : p.sliding.speeds)
-          if (V_hat > 0 && step > 2. * V_hat * tau)
-            coarse << (coarse.tellp() > 0 ? ", " : "") << V_hat;
-        if (coarse.tellp() > 0)
+        const double      step   = p.sliding.increment * p.mesh.finest_cell;
+        const std::string coarse = speeds_relaxing_within(p, tau, step / 2.);
+        if (!coarse.empty())
           p.notes.push_back(
-            "Warning: at V_hat = " + coarse.str() +
+            "Warning: at V_hat = " + coarse +
             " the sliding step ('Sliding/Sliding increment' x 'Mesh/Finest "
             "surface cell' = " +
             num(step) +
@@ -279,13 +291,11 @@ namespace viscoslide
           const double tau =
             make_solid(p, s).longest_relaxation_time() / s.tau_ref;
           warn_coarse_sliding_step(p, tau);
-          std::ostringstream slow;
-          for (const double V_hat : p.sliding.speeds)
-            if (V_hat > 0 && V_hat * tau < p.mesh.finest_cell)
-              slow << (slow.tellp() > 0 ? ", " : "") << V_hat;
-          if (slow.tellp() > 0)
+          const std::string slow =
+            speeds_relaxing_within(p, tau, p.mesh.finest_cell);
+          if (!slow.empty())
             p.notes.push_back(
-              "Warning: at V_hat = " + slow.str() +
+              "Warning: at V_hat = " + slow +
               " the relaxation length V tau of the slowest arm is shorter "
               "than 'Mesh/Finest surface cell' = " +
               num(p.mesh.finest_cell) +

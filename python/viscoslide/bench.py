@@ -296,10 +296,10 @@ def transient_agreement(argv):
             out = os.path.join(work, os.path.basename(f)[:-4] + '-' + solver)
             path = prm.override_file(f, out + '.prm', {'Output/Output directory': out,
                                                        'Sliding/Solver': solver})
-            log = open(out + '.log', 'w')
-            running.append(((f, solver), out, time.time(),
-                            subprocess.Popen([VISCOSLIDE, path], stdout=log,
-                                             stderr=subprocess.STDOUT)))
+            with open(out + '.log', 'w') as log:  # the child keeps its copy
+                running.append(((f, solver), out, time.time(),
+                                subprocess.Popen([VISCOSLIDE, path], stdout=log,
+                                                 stderr=subprocess.STDOUT)))
         time.sleep(0.5)
         for r in [r for r in running if r[3].poll() is not None]:
             running.remove(r)

@@ -83,9 +83,10 @@ namespace viscoslide
         // search sees only round-off (a graded grid's displacements are 1e4
         // eps and more): that is the equilibrium.
         p.remember_iterate();
-        double alpha   = 1.;
-        bool   reduced = false;
-        double trial   = residual;
+        double       alpha     = 1.;
+        bool         reduced   = false;
+        double       trial     = residual;
+        const double round_off = 10 * tolerance;
         for (unsigned int k = 0; k < (line_search ? 8 : 1); ++k)
           {
             p.step(alpha);
@@ -104,7 +105,7 @@ namespace viscoslide
           out << "        line search: alpha = " << alpha << std::endl;
         if (!reduced)
           {
-            if (residual > 10 * tolerance)
+            if (residual > round_off)
               return -1;
             p.step(0.);
             p.assemble(true);
@@ -117,7 +118,7 @@ namespace viscoslide
         crawling = alpha <= 1. / 16 ? crawling + 1 : 0;
         if (crawling == 3)
           {
-            if (trial <= 10 * tolerance)
+            if (trial <= round_off)
               {
                 p.assemble(true);
                 return it + 1;

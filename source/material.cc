@@ -8,13 +8,21 @@ namespace viscoslide
 {
   namespace
   {
-    // In-plane part of the isotropic stiffness in plane strain.
+    // The isotropic stiffness; in 2D its in-plane part, that of plane
+    // strain.
+    template <int dim>
+    SymmetricTensor<4, dim>
+    isotropic_stiffness(const double lambda, const double mu)
+    {
+      return lambda * outer_product(unit_symmetric_tensor<dim>(),
+                                    unit_symmetric_tensor<dim>()) +
+             2. * mu * identity_tensor<dim>();
+    }
+
     SymmetricTensor<4, 2>
     plane_strain_stiffness(const double lambda, const double mu)
     {
-      return lambda * outer_product(unit_symmetric_tensor<2>(),
-                                    unit_symmetric_tensor<2>()) +
-             2. * mu * identity_tensor<2>();
+      return isotropic_stiffness<2>(lambda, mu);
     }
 
     double
@@ -31,6 +39,7 @@ namespace viscoslide
                                        const double                  tau,
                                        const std::vector<PronyTerm> &series)
     : nu(nu)
+    , E0(E0)
     , lambda0(lame_lambda(E0, nu))
     , C0(plane_strain_stiffness(lambda0, E0 / (2. * (1. + nu))))
   {
@@ -137,6 +146,50 @@ namespace viscoslide
                                       const ArmStress   &h) const
   {
     return 2. * arm_energy(k, h) / arms[k].tau;
+  }
+
+
+  double
+  ViscoelasticSolid::dissipation_rate(const unsigned int           k,
+                                      const SymmetricTensor<2, 3> &h) const
+  {
+    if (arms[k].E <= 0.)
+      return 0.;
+    // 2 (h : C^{-1} : h)/2 / tau with C^{-1} as in arm_energy().
+    const double tr = trace(h);
+    return ((1. + nu) * (h * h) - nu * tr * tr) / arms[k].E / arms[k].tau;
+  }
+
+
+  template <>
+  SymmetricTensor<4, 2>
+  ViscoelasticSolid::relaxed_stiffness_of<2>() const
+  {
+    return C0;
+  }
+
+
+  template <>
+  SymmetricTensor<4, 3>
+  ViscoelasticSolid::relaxed_stiffness_of<3>() const
+  {
+    return isotropic_stiffness<3>(lambda0, E0 / (2. * (1. + nu)));
+  }
+
+
+  template <>
+  SymmetricTensor<4, 2>
+  ViscoelasticSolid::arm_stiffness_of<2>(const unsigned int k) const
+  {
+    return arms[k].C;
+  }
+
+
+  template <>
+  SymmetricTensor<4, 3>
+  ViscoelasticSolid::arm_stiffness_of<3>(const unsigned int k) const
+  {
+    return isotropic_stiffness<3>(arms[k].lambda, arms[k].E / (2. * (1. + nu)));
   }
 
 

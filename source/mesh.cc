@@ -21,29 +21,82 @@ namespace viscoslide
   } // namespace
 
 
+  template <int dim>
   void
-  make_block(parallel::distributed::Triangulation<2> &triangulation,
-             const Parameters::AllParameters         &prm)
+  make_block(parallel::distributed::Triangulation<dim> &triangulation,
+             const Parameters::AllParameters           &prm)
   {
     const double W = prm.geometry.domain_width, H = prm.geometry.height();
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              {n_coarse_cells(W, W, H),
-                                               n_coarse_cells(H, W, H)},
-                                              Point<2>(-W / 2, -H),
-                                              Point<2>(W / 2, 0),
-                                              true);
+    if constexpr (dim == 2)
+      GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                {n_coarse_cells(W, W, H),
+                                                 n_coarse_cells(H, W, H)},
+                                                Point<2>(-W / 2, -H),
+                                                Point<2>(W / 2, 0),
+                                                true);
+    else
+      {
+        const double L = prm.geometry.length(), side = std::min({W, L, H});
+        GridGenerator::subdivided_hyper_rectangle(
+          triangulation,
+          {n_coarse_cells(W, side, side),
+           // even across, so that the track's centre line y = 0 is one
+           // of the cells' faces
+           2 * n_coarse_cells(L / 2, side, side),
+           n_coarse_cells(H, side, side)},
+          Point<3>(-W / 2, -L / 2, -H),
+          Point<3>(W / 2, L / 2, 0),
+          true);
+      }
   }
 
 
+  namespace
+  {
+    // The distance from a box (its lower and upper corners) to a surface
+    // region, the region widened by `margin` along the surface; the box's
+    // depth below the surface counts in full.
+    template <int dim>
+    double
+    distance_to(const BoundingBox<dim>   &box,
+                const SurfaceRegion<dim> &region,
+                const double              margin)
+    {
+      const double depth = std::max(0., -box.upper_bound(dim - 1));
+      double       along = 0.;
+      for (unsigned int d = 0; d + 1 < dim; ++d)
+        {
+          const double gap     = std::max({0.,
+                                           region.lower[d] - box.upper_bound(d),
+                                           box.lower_bound(d) - region.upper[d]});
+          const double widened = std::max(0., gap - margin);
+          along = dim == 2 ? widened : std::hypot(along, widened);
+        }
+      return std::hypot(along, depth);
+    }
+  } // namespace
+
+
+  template <int dim>
   bool
-  flag_cells_near_edges(parallel::distributed::Triangulation<2> &triangulation,
-                        const std::vector<std::pair<double, double>> &edges,
-                        const Parameters::AllParameters              &prm)
+  flag_cells_near_edges(
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const SurfaceRegions<dim>                 &edges,
+    const Parameters::AllParameters           &prm)
   {
     const double W = prm.geometry.domain_width, H = prm.geometry.height();
-    const double coarse_width = W / n_coarse_cells(W, W, H);
-    const std::vector<std::pair<double, double>> whole_surface{{-W / 2, W / 2}};
-    const int                                    max_level = static_cast<int>(
+    const double side =
+      dim == 2 ? std::min(W, H) : std::min({W, prm.geometry.length(), H});
+    const double        coarse_width = W / n_coarse_cells(W, side, side);
+    SurfaceRegions<dim> whole_surface(1);
+    whole_surface[0].lower[0] = -W / 2;
+    whole_surface[0].upper[0] = W / 2;
+    if constexpr (dim == 3)
+      {
+        whole_surface[0].lower[1] = -prm.geometry.length() / 2;
+        whole_surface[0].upper[1] = prm.geometry.length() / 2;
+      }
+    const int max_level = static_cast<int>(
       std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
     // The refinement level a cell at distance d from the edges needs.
     const auto level_at = [&](const double d) {
@@ -60,19 +113,14 @@ namespace viscoslide
         {
           // The distance to the nearest edge, and to the nearest edge
           // widened by the margin along the surface.
-          const auto   box = cell->bounding_box();
-          const double dy  = std::max(0., -box.upper_bound(1));
-          double       d = std::numeric_limits<double>::max(), d_wide = d;
-          for (const auto &[a, b] :
+          const auto box = cell->bounding_box();
+          double     d = std::numeric_limits<double>::max(), d_wide = d;
+          for (const auto &region :
                prm.mesh.uniform_surface ? whole_surface : edges)
             {
-              const double dx =
-                std::max({0., a - box.upper_bound(0), box.lower_bound(0) - b});
-              d = std::min(d, std::hypot(dx, dy));
-              d_wide =
-                std::min(d_wide,
-                         std::hypot(std::max(0., dx - prm.mesh.edge_margin),
-                                    dy));
+              d      = std::min(d, distance_to(box, region, 0.));
+              d_wide = std::min(d_wide,
+                                distance_to(box, region, prm.mesh.edge_margin));
             }
           const int needed = level_at(d);
           const int wanted = level_at(d_wide);
@@ -105,6 +153,22 @@ namespace viscoslide
   }
 
 
+  template void
+  make_block(parallel::distributed::Triangulation<2> &,
+             const Parameters::AllParameters &);
+  template void
+  make_block(parallel::distributed::Triangulation<3> &,
+             const Parameters::AllParameters &);
+  template bool
+  flag_cells_near_edges(parallel::distributed::Triangulation<2> &,
+                        const SurfaceRegions<2> &,
+                        const Parameters::AllParameters &);
+  template bool
+  flag_cells_near_edges(parallel::distributed::Triangulation<3> &,
+                        const SurfaceRegions<3> &,
+                        const Parameters::AllParameters &);
+
+
   int
   resolve_on_adapted_meshes(const unsigned int           max_cycles,
                             const std::function<bool()> &adapt_mesh,
@@ -126,8 +190,6 @@ namespace viscoslide
   {
     namespace
     {
-      constexpr int default_domain_height = 10000;
-      constexpr int default_wake_lengths  = 20;
     } // namespace
 
 
@@ -162,7 +224,7 @@ namespace viscoslide
                         "W/eps, the lateral extent of the block (x from "
                         "-W/2 to W/2). Lateral sides are traction free.");
       prm.declare_entry("Domain height",
-                        std::to_string(default_domain_height),
+                        std::to_string(Geometry::default_domain_height),
                         Patterns::Double(),
                         "H/eps of the half-plane block. Under displacement "
                         "control the approach delta depends on it "
@@ -186,7 +248,7 @@ namespace viscoslide
         "width.");
       prm.declare_entry(
         "Wake lengths",
-        std::to_string(default_wake_lengths),
+        std::to_string(Geometry::default_wake_lengths),
         Patterns::Double(0.),
         "The steady-state solver needs the wake, the solid relaxing "
         "over V tau_c behind the contact (tau_c the creep time), inside "

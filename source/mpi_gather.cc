@@ -1,3 +1,4 @@
+#include <viscoslide/mesh.h>
 #include <viscoslide/mpi_gather.h>
 #include <viscoslide/postprocessing.h>
 
@@ -65,4 +66,8 @@ namespace viscoslide
                       int);
   template std::vector<ProfilePoint>
   gather_concatenated(MPI_Comm, const std::vector<ProfilePoint> &, int);
+  template SurfaceRegions<2>
+  gather_concatenated(MPI_Comm, const SurfaceRegions<2> &, int);
+  template SurfaceRegions<3>
+  gather_concatenated(MPI_Comm, const SurfaceRegions<3> &, int);
 } // namespace viscoslide

@@ -390,6 +390,16 @@ namespace viscoslide
                       const std::string &,
                       unsigned int,
                       double);
+  template void
+  OutputWriter::write(const DataOut<3> &,
+                      const std::string &,
+                      unsigned int,
+                      double);
+  template void
+  OutputWriter::write(const DataOutFaces<3> &,
+                      const std::string &,
+                      unsigned int,
+                      double);
 
 
   void

@@ -9,12 +9,14 @@
 
 namespace viscoslide
 {
-  SurfaceCoupling::SurfaceCoupling(const Parameters::AllParameters &prm,
-                                   const Scales                    &scales,
-                                   const InteractionLaw            &law,
-                                   const Indenter                  &indenter,
-                                   const SurfacePostprocessor &postprocessor,
-                                   MPI_Comm                    comm)
+  template <int dim>
+  SurfaceCoupling<dim>::SurfaceCoupling(
+    const Parameters::AllParameters &prm,
+    const Scales                    &scales,
+    const InteractionLaw            &law,
+    const Indenter                  &indenter,
+    const SurfacePostprocessor<dim> &postprocessor,
+    MPI_Comm                         comm)
     : prm(prm)
     , scales(scales)
     , traction_law(law)
@@ -26,9 +28,11 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   double
-  SurfaceCoupling::spring_stiffness_of(const Parameters::AllParameters &prm,
-                                       const Scales                    &scales)
+  SurfaceCoupling<dim>::spring_stiffness_of(
+    const Parameters::AllParameters &prm,
+    const Scales                    &scales)
   {
     return prm.sliding.control == Parameters::Control::spring
              ? prm.sliding.spring_stiffness * scales.force / scales.eps
@@ -36,23 +40,26 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::LocalTerms::reinit(const unsigned int dofs_per_cell)
+  SurfaceCoupling<dim>::LocalTerms::reinit(const unsigned int dofs_per_cell)
   {
     coupling.reinit(dofs_per_cell);
     force = stiffness = abs_force = 0.;
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::reinit(const IndexSet &locally_owned_dofs)
+  SurfaceCoupling<dim>::reinit(const IndexSet &locally_owned_dofs)
   {
     delta_coupling.reinit(locally_owned_dofs, comm);
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::start_assembly()
+  SurfaceCoupling<dim>::start_assembly()
   {
     if (control.force_controlled)
       delta_coupling = 0;
@@ -60,17 +67,18 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::add_face_terms(const FEFaceValuesBase<2> &face_values,
-                                  const VectorType          &solution,
-                                  const double               delta,
-                                  const double               s,
-                                  const bool                 with_matrix,
-                                  FullMatrix<double>        &cell_matrix,
-                                  Vector<double>            &cell_rhs,
-                                  LocalTerms                &local) const
+  SurfaceCoupling<dim>::add_face_terms(const FEFaceValuesBase<dim> &face_values,
+                                       const VectorType            &solution,
+                                       const double                 delta,
+                                       const double                 s,
+                                       const bool                   with_matrix,
+                                       FullMatrix<double>          &cell_matrix,
+                                       Vector<double>              &cell_rhs,
+                                       LocalTerms                  &local) const
   {
-    const FEValuesExtractors::Scalar uy(1);
+    const FEValuesExtractors::Scalar uy(vertical<dim>);
     const unsigned int               n_q = face_values.n_quadrature_points;
     const unsigned int               n   = face_values.dofs_per_cell;
     std::vector<double>              u_y(n_q), anchor_u_y(n_q), phi_y(n);
@@ -80,7 +88,7 @@ namespace viscoslide
     for (unsigned int q = 0; q < n_q; ++q)
       {
         const auto [p, dp_dg] =
-          law_at(face_values.quadrature_point(q)[0], u_y[q], delta, s);
+          law_at(face_values.quadrature_point(q), u_y[q], delta, s);
         double       traction  = p;
         double       stiffness = dp_dg;
         const double JxW       = face_values.JxW(q);
@@ -106,8 +114,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::copy_local_to_global(
+  SurfaceCoupling<dim>::copy_local_to_global(
     const LocalTerms                           &local,
     const FullMatrix<double>                   &cell_matrix,
     const Vector<double>                       &cell_rhs,
@@ -132,11 +141,12 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::finish_assembly(const double                    delta,
-                                   const bool                      with_matrix,
-                                   TrilinosWrappers::SparseMatrix &matrix,
-                                   VectorType                     &rhs)
+  SurfaceCoupling<dim>::finish_assembly(const double delta,
+                                        const bool   with_matrix,
+                                        TrilinosWrappers::SparseMatrix &matrix,
+                                        VectorType                     &rhs)
   {
     if (with_matrix)
       matrix.compress(VectorOperation::add);
@@ -152,19 +162,37 @@ namespace viscoslide
   }
 
 
-  std::pair<double, double>
-  SurfaceCoupling::law_at(const double x,
-                          const double u_y,
-                          const double delta,
-                          const double s) const
+  template <int dim>
+  double
+  SurfaceCoupling<dim>::gap_at(const Point<dim> &p,
+                               const double      u,
+                               const double      delta,
+                               const double      s) const
   {
-    const double g = gap(profile, scales.eps, delta, s, x, u_y);
+    return gap(profile,
+               scales.eps,
+               delta,
+               0.,
+               apex_distance(p, s, prm.geometry.elongation),
+               u);
+  }
+
+
+  template <int dim>
+  std::pair<double, double>
+  SurfaceCoupling<dim>::law_at(const Point<dim> &p,
+                               const double      u,
+                               const double      delta,
+                               const double      s) const
+  {
+    const double g = gap_at(p, u, delta, s);
     return {traction_law.traction(g), traction_law.derivative(g)};
   }
 
 
+  template <int dim>
   double
-  SurfaceCoupling::tolerance() const
+  SurfaceCoupling<dim>::tolerance() const
   {
     // One loaded finest cell, so that a contact-free state converges too.
     const double floor = scales.sigma_max * prm.mesh.finest_cell;
@@ -172,13 +200,14 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::attach(ReusedFactorization             &solver,
-                          const DoFHandler<2>             &dof_handler,
-                          const AffineConstraints<double> &constraints,
-                          const VectorType                &solution,
-                          const double                    &delta,
-                          const double                    &s) const
+  SurfaceCoupling<dim>::attach(ReusedFactorization             &solver,
+                               const DoFHandler<dim>           &dof_handler,
+                               const AffineConstraints<double> &constraints,
+                               const VectorType                &solution,
+                               const double                    &delta,
+                               const double                    &s) const
   {
     solver.reinit(
       surface_unknowns(dof_handler, constraints),
@@ -193,9 +222,28 @@ namespace viscoslide
 
   namespace
   {
+    // The point of an axis-parallel face at the unit face point t.
+    template <class FaceIterator,
+              int dim = FaceIterator::AccessorType::space_dimension>
+    Point<dim>
+    surface_point(const FaceIterator &face, const Point<dim - 1> &t)
+    {
+      Point<dim> p = face->vertex(0);
+      if constexpr (dim == 2)
+        p[0] =
+          face->vertex(0)[0] + t[0] * (face->vertex(1)[0] - face->vertex(0)[0]);
+      else
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] += t[0] * (face->vertex(1)[d] - face->vertex(0)[d]) +
+                  t[1] * (face->vertex(2)[d] - face->vertex(0)[d]);
+      return p;
+    }
+
+
     // The top faces that touch a window T, on the first process: per face
     // its m u_y unknowns (position in T or -1, value), then per quadrature
-    // point its abscissa, JxW and the m shape values.
+    // point its dim - 1 horizontal coordinates, JxW and the m shape values.
+    template <int dim>
     struct WindowFaces
     {
       unsigned int        m = 0, n_q = 0;
@@ -204,26 +252,27 @@ namespace viscoslide
       unsigned int
       record() const
       {
-        return 2 * m + n_q * (2 + m);
+        return 2 * m + n_q * (dim + m);
       }
     };
 
 
     // Gathers them; empty on every process if a face's unknown is
     // constrained (not expected on the top surface).
-    WindowFaces
-    gather_window_faces(const DoFHandler<2>                 &dof_handler,
+    template <int dim>
+    WindowFaces<dim>
+    gather_window_faces(const DoFHandler<dim>               &dof_handler,
                         const AffineConstraints<double>     &constraints,
                         const TrilinosWrappers::MPI::Vector &solution,
-                        const Quadrature<1>                 &quadrature,
+                        const Quadrature<dim - 1>           &quadrature,
                         const std::vector<int>              &T,
                         const MPI_Comm                       comm)
     {
-      const auto     &fe = dof_handler.get_fe();
-      WindowFaces     faces;
-      FEFaceValues<2> values(fe,
-                             quadrature,
-                             SurfaceCoupling::face_update_flags());
+      const auto       &fe = dof_handler.get_fe();
+      WindowFaces<dim>  faces;
+      FEFaceValues<dim> values(fe,
+                               quadrature,
+                               SurfaceCoupling<dim>::face_update_flags());
       faces.n_q = quadrature.size();
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       const auto position = [&T](const types::global_dof_index i) {
@@ -240,7 +289,7 @@ namespace viscoslide
             std::vector<unsigned int> on_face;
             bool                      touches = false;
             for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (fe.system_to_component_index(i).first == 1 &&
+              if (fe.system_to_component_index(i).first == vertical<dim> &&
                   fe.has_support_on_face(i, f))
                 {
                   on_face.push_back(i);
@@ -259,11 +308,12 @@ namespace viscoslide
               }
             for (unsigned int q = 0; q < faces.n_q; ++q)
               {
-                faces.data.insert(faces.data.end(),
-                                  {values.quadrature_point(q)[0],
-                                   values.JxW(q)});
+                for (unsigned int d = 0; d + 1 < dim; ++d)
+                  faces.data.push_back(values.quadrature_point(q)[d]);
+                faces.data.push_back(values.JxW(q));
                 for (const unsigned int i : on_face)
-                  faces.data.push_back(values.shape_value_component(i, q, 1));
+                  faces.data.push_back(
+                    values.shape_value_component(i, q, vertical<dim>));
               }
           }
       faces.data = gather_concatenated(comm, faces.data, 0);
@@ -275,11 +325,11 @@ namespace viscoslide
 
 
     // The terms of add_face_terms() on the rows of T (k of them) with T's
-    // unknowns moved by x_T; law(x, u_y) gives the traction and its
-    // derivative there.
-    template <typename Law>
+    // unknowns moved by x_T; law(p, u_y) gives the traction and its
+    // derivative at the surface point p.
+    template <int dim, typename Law>
     WindowTerms
-    window_terms(const WindowFaces            &faces,
+    window_terms(const WindowFaces<dim>       &faces,
                  const unsigned int            k,
                  const dealii::Vector<double> &x_T,
                  const Law                    &law)
@@ -301,13 +351,16 @@ namespace viscoslide
             }
           for (unsigned int q = 0; q < faces.n_q; ++q)
             {
-              const double *point = r + 2 * m + q * (2 + m);
-              const double  JxW   = point[1];
-              const double *phi   = point + 2;
-              double        u_q   = 0.;
+              const double *point = r + 2 * m + q * (dim + m);
+              Point<dim>    where;
+              for (unsigned int d = 0; d + 1 < dim; ++d)
+                where[d] = point[d];
+              const double  JxW = point[dim - 1];
+              const double *phi = point + dim;
+              double        u_q = 0.;
               for (unsigned int j = 0; j < m; ++j)
                 u_q += phi[j] * u[j];
-              const auto [traction, dp_dg] = law(point[0], u_q);
+              const auto [traction, dp_dg] = law(where, u_q);
               W.force -= traction * JxW;
               W.stiffness += dp_dg * JxW;
               for (unsigned int i = 0; i < m; ++i)
@@ -328,13 +381,15 @@ namespace viscoslide
   } // namespace
 
 
+  template <int dim>
   WindowModel
-  SurfaceCoupling::window_model(const DoFHandler<2>             &dof_handler,
-                                const AffineConstraints<double> &constraints,
-                                const VectorType                &solution,
-                                const double                     delta,
-                                const double                     s,
-                                const std::vector<int>          &T) const
+  SurfaceCoupling<dim>::window_model(
+    const DoFHandler<dim>           &dof_handler,
+    const AffineConstraints<double> &constraints,
+    const VectorType                &solution,
+    const double                     delta,
+    const double                     s,
+    const std::vector<int>          &T) const
   {
     WindowModel model;
     model.tolerance = tolerance();
@@ -345,7 +400,7 @@ namespace viscoslide
     // method on the jump-in of two tests).
     if (relaxing)
       return model;
-    const WindowFaces faces = gather_window_faces(
+    const WindowFaces<dim> faces = gather_window_faces(
       dof_handler, constraints, solution, quadrature, T, comm);
     if (Utilities::MPI::this_mpi_process(comm) != 0 || faces.data.empty())
       return model;
@@ -353,8 +408,8 @@ namespace viscoslide
       [this, faces, k = T.size(), delta, s](const dealii::Vector<double> &x_T,
                                             const double                  t) {
         WindowTerms W =
-          window_terms(faces, k, x_T, [&](const double x, const double u_y) {
-            return law_at(x, u_y, delta + t, s);
+          window_terms(faces, k, x_T, [&](const Point<dim> &p, const double u) {
+            return law_at(p, u, delta + t, s);
           });
         // G's spring term under spring control.
         W.force += control.spring_stiffness * t;
@@ -365,18 +420,20 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   double
-  SurfaceCoupling::residual_norm(const VectorType &rhs) const
+  SurfaceCoupling<dim>::residual_norm(const VectorType &rhs) const
   {
     const double r = rhs.l2_norm();
     return control.force_controlled ? std::hypot(r, force_mismatch) : r;
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::solve_bordered(const LinearSolve &solve,
-                                  const VectorType  &rhs,
-                                  VectorType        &update)
+  SurfaceCoupling<dim>::solve_bordered(const LinearSolve &solve,
+                                       const VectorType  &rhs,
+                                       VectorType        &update)
   {
     VectorType x1;
     x1.reinit(rhs);
@@ -395,11 +452,13 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::solve_bordered(ReusedFactorization                  &solver,
-                                  const TrilinosWrappers::SparseMatrix &matrix,
-                                  const VectorType                     &rhs,
-                                  VectorType                           &update)
+  SurfaceCoupling<dim>::solve_bordered(
+    ReusedFactorization                  &solver,
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const VectorType                     &rhs,
+    VectorType                           &update)
   {
     delta_update = 0.;
     if (control.force_controlled)
@@ -410,8 +469,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   NewtonProblem
-  SurfaceCoupling::newton_problem(const System &system)
+  SurfaceCoupling<dim>::newton_problem(const System &system)
   {
     // The line search's start lives here, in the layout of the update.
     u0.reinit(system.update);
@@ -435,8 +495,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   int
-  SurfaceCoupling::newton(const System &system, ConditionalOStream &out)
+  SurfaceCoupling<dim>::newton(const System &system, ConditionalOStream &out)
   {
     return viscoslide::newton(newton_problem(system),
                               prm.solver.max_newton_iterations,
@@ -446,8 +507,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   int
-  SurfaceCoupling::relax(const System &system, ConditionalOStream &out)
+  SurfaceCoupling<dim>::relax(const System &system, ConditionalOStream &out)
   {
     relaxation_anchor.reinit(system.solution);
     relaxing = true;
@@ -459,10 +521,11 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   template <typename Function>
   void
-  SurfaceCoupling::for_each_surface_unknown(
-    const DoFHandler<2>             &dof_handler,
+  SurfaceCoupling<dim>::for_each_surface_unknown(
+    const DoFHandler<dim>           &dof_handler,
     const AffineConstraints<double> &constraints,
     const Function                  &f) const
   {
@@ -478,25 +541,24 @@ namespace viscoslide
           const auto face = cell->face(f_no);
           face->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (fe.face_system_to_component_index(i).first == 1 &&
+            if (fe.face_system_to_component_index(i).first == vertical<dim> &&
                 owned.is_element(dofs[i]) &&
                 !constraints.is_constrained(dofs[i]))
-              f(dofs[i],
-                face->vertex(0)[0] +
-                  points[i][0] * (face->vertex(1)[0] - face->vertex(0)[0]));
+              f(dofs[i], surface_point(face, points[i]));
         }
   }
 
 
+  template <int dim>
   IndexSet
-  SurfaceCoupling::surface_unknowns(
-    const DoFHandler<2>             &dof_handler,
+  SurfaceCoupling<dim>::surface_unknowns(
+    const DoFHandler<dim>           &dof_handler,
     const AffineConstraints<double> &constraints) const
   {
     IndexSet unknowns(dof_handler.n_dofs());
     for_each_surface_unknown(dof_handler,
                              constraints,
-                             [&](const auto dof, double) {
+                             [&](const auto dof, const Point<dim> &) {
                                unknowns.add_index(dof);
                              });
     unknowns.compress();
@@ -504,12 +566,14 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   IndexSet
-  SurfaceCoupling::surface_window(const DoFHandler<2>             &dof_handler,
-                                  const AffineConstraints<double> &constraints,
-                                  const VectorType                &solution,
-                                  const double                     delta,
-                                  const double                     s) const
+  SurfaceCoupling<dim>::surface_window(
+    const DoFHandler<dim>           &dof_handler,
+    const AffineConstraints<double> &constraints,
+    const VectorType                &solution,
+    const double                     delta,
+    const double                     s) const
   {
     // The relaxation's dashpot acts on every surface row and changes at
     // every pseudo-step: a window of the whole surface keeps one
@@ -524,15 +588,36 @@ namespace viscoslide
       }
     std::vector<std::pair<types::global_dof_index, double>> gaps;
     double smallest = std::numeric_limits<double>::max();
-    for_each_surface_unknown(
-      dof_handler, constraints, [&](const auto dof, const double x) {
-        const double g = gap(profile, scales.eps, delta, s, x, solution[dof]);
-        gaps.emplace_back(dof, g);
-        smallest = std::min(smallest, g);
-      });
-    const double limit = std::max(window_gap * scales.eps,
-                                  2. * Utilities::MPI::min(smallest, comm));
-    IndexSet     window(dof_handler.n_dofs());
+    for_each_surface_unknown(dof_handler,
+                             constraints,
+                             [&](const auto dof, const Point<dim> &p) {
+                               const double g =
+                                 gap_at(p, solution[dof], delta, s);
+                               gaps.emplace_back(dof, g);
+                               smallest = std::min(smallest, g);
+                             });
+    double limit = std::max(window_gap * scales.eps,
+                            2. * Utilities::MPI::min(smallest, comm));
+    // A 3D contact's window holds a disc of the surface: thousands of
+    // unknowns. The dense stage is kept at whole_window of them, those of
+    // the smallest gaps; the rest is exact but for a new factorization
+    // where their terms change (ReusedFactorization).
+    if constexpr (dim == 3)
+      {
+        std::vector<double> local;
+        for (const auto &[dof, g] : gaps)
+          if (g < limit)
+            local.push_back(g);
+        std::vector<double> all = gather_concatenated(comm, local, -1);
+        if (all.size() > whole_window)
+          {
+            std::nth_element(all.begin(),
+                             all.begin() + whole_window,
+                             all.end());
+            limit = all[whole_window];
+          }
+      }
+    IndexSet window(dof_handler.n_dofs());
     for (const auto &[dof, g] : gaps)
       if (g < limit)
         window.add_index(dof);
@@ -541,11 +626,12 @@ namespace viscoslide
   }
 
 
-  std::vector<std::pair<double, double>>
-  SurfaceCoupling::contact_edges(const DoFHandler<2> &dof_handler,
-                                 const VectorType    &solution,
-                                 const double         delta,
-                                 const double         s) const
+  template <int dim>
+  SurfaceRegions<dim>
+  SurfaceCoupling<dim>::contact_edges(const DoFHandler<dim> &dof_handler,
+                                      const VectorType      &solution,
+                                      const double           delta,
+                                      const double           s) const
   {
     auto edges = postprocessor.faces_in_gap_band(dof_handler,
                                                  solution,
@@ -554,19 +640,24 @@ namespace viscoslide
                                                  prm.mesh.edge_gap_low,
                                                  prm.mesh.edge_gap_high);
     if (edges.empty())
-      edges.emplace_back(s, s);
+      {
+        SurfaceRegion<dim> apex;
+        apex.lower[0] = apex.upper[0] = s;
+        edges.push_back(apex);
+      }
     return edges;
   }
 
 
+  template <int dim>
   bool
-  SurfaceCoupling::flag_contact_edges(
-    parallel::distributed::Triangulation<2>      &triangulation,
-    const DoFHandler<2>                          &dof_handler,
-    const VectorType                             &solution,
-    const double                                  delta,
-    const double                                  s,
-    const std::vector<std::pair<double, double>> &expected) const
+  SurfaceCoupling<dim>::flag_contact_edges(
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const DoFHandler<dim>                     &dof_handler,
+    const VectorType                          &solution,
+    const double                               delta,
+    const double                               s,
+    const SurfaceRegions<dim>                 &expected) const
   {
     auto edges = contact_edges(dof_handler, solution, delta, s);
     edges.insert(edges.end(), expected.begin(), expected.end());
@@ -574,9 +665,10 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SurfaceCoupling::limit_predicted_closing(
-    const DoFHandler<2>             &dof_handler,
+  SurfaceCoupling<dim>::limit_predicted_closing(
+    const DoFHandler<dim>           &dof_handler,
     const AffineConstraints<double> &constraints,
     const VectorType                &last,
     const double                     last_delta,
@@ -590,10 +682,10 @@ namespace viscoslide
     // all of them compress alike.
     std::map<types::global_dof_index, double> u_y_change;
     for_each_surface_unknown(
-      dof_handler, constraints, [&](const auto dof, const double x) {
+      dof_handler, constraints, [&](const auto dof, const Point<dim> &p) {
         const double floor =
-          std::min(eps, gap(profile, eps, last_delta, last_s, x, last[dof]));
-        const double g = gap(profile, eps, delta, s, x, predicted[dof]);
+          std::min(eps, gap_at(p, last[dof], last_delta, last_s));
+        const double g = gap_at(p, predicted[dof], delta, s);
         if (g < floor)
           u_y_change[dof] = g - floor; // opens the gap to floor
       });
@@ -608,4 +700,8 @@ namespace viscoslide
     predicted.compress(VectorOperation::add);
     constraints.distribute(predicted);
   }
+
+
+  template class SurfaceCoupling<2>;
+  template class SurfaceCoupling<3>;
 } // namespace viscoslide

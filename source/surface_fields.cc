@@ -9,35 +9,39 @@ namespace viscoslide
   namespace
   {
     // Pressure and gap from u_y and x.
-    class SurfaceFields : public DataPostprocessor<2>
+    template <int dim>
+    class SurfaceFields : public DataPostprocessor<dim>
     {
     public:
       SurfaceFields(const InteractionLaw &law,
                     const Indenter       &indenter,
                     const Scales         &scales,
                     const double          delta,
-                    const double          s)
+                    const double          s,
+                    const double          elongation)
         : law(law)
         , indenter(indenter)
         , scales(scales)
         , delta(delta)
         , s(s)
+        , elongation(elongation)
       {
       }
 
       void
       evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<2> &inputs,
-        std::vector<Vector<double>>              &computed) const override
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
       {
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
           {
-            const double g = gap(indenter,
-                                 scales.eps,
-                                 delta,
-                                 s,
-                                 inputs.evaluation_points[q][0],
-                                 inputs.solution_values[q][1]);
+            const double g =
+              gap(indenter,
+                  scales.eps,
+                  delta,
+                  0.,
+                  apex_distance(inputs.evaluation_points[q], s, elongation),
+                  inputs.solution_values[q][vertical<dim>]);
             computed[q](0) = -law.traction(g) / scales.sigma_max;
             computed[q](1) = g / scales.eps;
           }
@@ -59,15 +63,18 @@ namespace viscoslide
       const InteractionLaw &law;
       const Indenter       &indenter;
       const Scales         &scales;
-      const double          delta, s;
+      const double          delta, s, elongation;
     };
 
     // DataOutFaces over the locally owned faces of the top surface only.
-    class TopSurfaceDataOut : public DataOutFaces<2>
+    template <int dim>
+    class TopSurfaceDataOut : public DataOutFaces<dim>
     {
     public:
+      using FaceDescriptor = typename DataOutFaces<dim>::FaceDescriptor;
+
       TopSurfaceDataOut()
-        : DataOutFaces<2>(true)
+        : DataOutFaces<dim>(true)
       {
       }
 
@@ -96,7 +103,7 @@ namespace viscoslide
 
     private:
       static unsigned int
-      top_face(const Triangulation<2>::cell_iterator &cell)
+      top_face(const typename Triangulation<dim>::cell_iterator &cell)
       {
         for (const unsigned int f : cell->face_indices())
           if (is_top_face(cell, f))
@@ -107,10 +114,11 @@ namespace viscoslide
   } // namespace
 
 
+  template <int dim>
   void
   write_surface_fields(OutputWriter                        &writer,
                        const std::string                   &name,
-                       const DoFHandler<2>                 &dof_handler,
+                       const DoFHandler<dim>               &dof_handler,
                        const TrilinosWrappers::MPI::Vector &solution,
                        const InteractionLaw                &law,
                        const Indenter                      &indenter,
@@ -118,16 +126,46 @@ namespace viscoslide
                        const double                         delta,
                        const double                         s,
                        const unsigned int                   counter,
-                       const double                         time)
+                       const double                         time,
+                       const double                         elongation)
   {
-    const SurfaceFields fields(law, indenter, scales, delta, s);
-    TopSurfaceDataOut   surface_out;
+    const SurfaceFields<dim> fields(
+      law, indenter, scales, delta, s, elongation);
+    TopSurfaceDataOut<dim> surface_out;
     surface_out.attach_dof_handler(dof_handler);
     surface_out.add_data_vector(solution, fields);
     surface_out.build_patches(2);
-    writer.write(static_cast<const DataOutFaces<2> &>(surface_out),
+    writer.write(static_cast<const DataOutFaces<dim> &>(surface_out),
                  name,
                  counter,
                  time);
   }
+
+
+  template void
+  write_surface_fields(OutputWriter &,
+                       const std::string &,
+                       const DoFHandler<2> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const InteractionLaw &,
+                       const Indenter &,
+                       const Scales &,
+                       double,
+                       double,
+                       unsigned int,
+                       double,
+                       double);
+  template void
+  write_surface_fields(OutputWriter &,
+                       const std::string &,
+                       const DoFHandler<3> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const InteractionLaw &,
+                       const Indenter &,
+                       const Scales &,
+                       double,
+                       double,
+                       unsigned int,
+                       double,
+                       double);
 } // namespace viscoslide

@@ -96,8 +96,8 @@ namespace viscoslide
     struct HandOver
     {
       parallel::distributed::Triangulation<dim> &triangulation;
-      SurfaceCoupling                           &coupling;
-      const SurfacePostprocessor                &postprocessor;
+      SurfaceCoupling<dim>                      &coupling;
+      const SurfacePostprocessor<dim>           &postprocessor;
       TimerOutput                               &timer;
       const DoFHandler<dim>                     &dof_handler;
       const TrilinosWrappers::MPI::Vector       &solution;
@@ -183,7 +183,7 @@ namespace viscoslide
                       TrilinosWrappers::MPI::Vector       &x);
     void
     solve_newton_system();
-    SurfaceCoupling::System
+    SurfaceCoupling<dim>::System
     newton_system();
     // Newton's method for the state `target` from the current iterate.
     // Returns the iterations used, or -1 if it did not converge.
@@ -322,12 +322,12 @@ namespace viscoslide
     ConditionalOStream               pcout;
     TimerOutput                      timer;
 
-    const Scales              &scales;
-    const ViscoelasticSolid   &material;
-    const InteractionLaw      &law;
-    const Indenter            &indenter;
-    const SurfacePostprocessor postprocessor;
-    SurfaceCoupling            coupling;
+    const Scales                   &scales;
+    const ViscoelasticSolid        &material;
+    const InteractionLaw           &law;
+    const Indenter                 &indenter;
+    const SurfacePostprocessor<dim> postprocessor;
+    SurfaceCoupling<dim>            coupling;
 
     parallel::distributed::Triangulation<dim> triangulation;
     const FESystem<dim>                       fe;

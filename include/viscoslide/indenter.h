@@ -7,9 +7,12 @@
 #ifndef viscoslide_indenter_h
 #define viscoslide_indenter_h
 
+#include <deal.II/base/point.h>
+
 #include <viscoslide/input.h>
 #include <viscoslide/registry.h>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -69,6 +72,21 @@ namespace viscoslide
   create_indenter(const Parameters::IndenterProfile &profile,
                   double                             R,
                   double                             domain_width);
+
+  // Where a surface point at p lies on the profile with the apex at x = s:
+  // xi = x - s in 2D; in 3D the radius of the body of revolution,
+  // sqrt((x - s)^2 + y^2/elongation) (R_y/R_x = elongation, doc/sphere.md).
+  template <int dim>
+  inline double
+  apex_distance(const dealii::Point<dim> &p,
+                const double              s,
+                const double              elongation)
+  {
+    if constexpr (dim == 2)
+      return p[0] - s;
+    else
+      return std::hypot(p[0] - s, p[1] / std::sqrt(elongation));
+  }
 
   // The gap of doc/conventions.md, g = eps + h(x - s) - delta - u_y, for a
   // surface point at x displaced by u_y, with the indenter at approach

@@ -92,16 +92,23 @@ namespace viscoslide
     SymmetricTensor<4, 2>
     tangent(const std::vector<StepFactors> &factors) const;
 
-    // C0 alone (the steady-state solver carries the arms as unknowns).
-    const SymmetricTensor<4, 2> &
-    relaxed_stiffness() const
-    {
-      return C0;
-    }
 
     // D_k = h_k : C_k^{-1} : h_k / tau_k (3D contraction, >= 0).
     double
     dissipation_rate(unsigned int arm, const ArmStress &h) const;
+    // The same for an arm stress of a 3D body.
+    double
+    dissipation_rate(unsigned int arm, const SymmetricTensor<2, 3> &h) const;
+
+    // C0 and C_k alone (the steady-state solver carries the arms as
+    // unknowns): in 2D the in-plane stiffnesses of plane strain, in 3D the
+    // whole isotropic ones.
+    template <int dim>
+    SymmetricTensor<4, dim>
+    relaxed_stiffness_of() const;
+    template <int dim>
+    SymmetricTensor<4, dim>
+    arm_stiffness_of(unsigned int arm) const;
 
     // Energy a step dissipates in one arm per unit volume: trapezoidal
     // rule on D_k for a finite step; for a relaxed step (dt = infinity)
@@ -122,12 +129,7 @@ namespace viscoslide
     ArmStress
     arm_stress(unsigned int arm, const SymmetricTensor<2, 2> &arm_strain) const;
 
-    // C_k (in plane), its Young's modulus E_k and relaxation time tau_k.
-    const SymmetricTensor<4, 2> &
-    arm_stiffness(const unsigned int arm) const
-    {
-      return arms[arm].C;
-    }
+    // Arm k's Young's modulus E_k and relaxation time tau_k.
     double
     arm_modulus(const unsigned int arm) const
     {
@@ -147,10 +149,24 @@ namespace viscoslide
       double                E, tau, lambda;
       SymmetricTensor<4, 2> C;
     };
-    double                nu, lambda0;
+    double                nu, E0, lambda0;
     SymmetricTensor<4, 2> C0;
     std::vector<Arm>      arms;
   };
+
+
+  template <>
+  SymmetricTensor<4, 2>
+  ViscoelasticSolid::relaxed_stiffness_of<2>() const;
+  template <>
+  SymmetricTensor<4, 3>
+  ViscoelasticSolid::relaxed_stiffness_of<3>() const;
+  template <>
+  SymmetricTensor<4, 2>
+  ViscoelasticSolid::arm_stiffness_of<2>(unsigned int arm) const;
+  template <>
+  SymmetricTensor<4, 3>
+  ViscoelasticSolid::arm_stiffness_of<3>(unsigned int arm) const;
 
 
   namespace Parameters

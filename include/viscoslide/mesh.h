@@ -29,8 +29,13 @@ namespace viscoslide
     // The 'Geometry' section: the block or the layer.
     struct Geometry
     {
+      static constexpr int default_domain_height = 10000;
+      static constexpr int default_wake_lengths  = 20;
+
       // 2: plane strain, a cylinder on a block; 3: a body of revolution
-      // (a sphere) on a half-space or layer, boundary elements only.
+      // (a sphere) on a half-space or layer, boundary elements only (the
+      // steady-state finite elements are written for 3D too, but not yet
+      // verified there: doc/steady_state.md).
       unsigned int dimension;
       Substrate    substrate;
       double       layer_thickness;
@@ -83,10 +88,27 @@ namespace viscoslide
 
 
   // Boundary ids of GridGenerator::subdivided_hyper_rectangle(colorize).
-  constexpr types::boundary_id left_boundary   = 0;
-  constexpr types::boundary_id right_boundary  = 1;
-  constexpr types::boundary_id bottom_boundary = 2;
-  constexpr types::boundary_id top_boundary    = 3;
+  constexpr types::boundary_id left_boundary  = 0;
+  constexpr types::boundary_id right_boundary = 1;
+  template <int dim>
+  constexpr types::boundary_id bottom_boundary = 2 * dim - 2;
+  template <int dim>
+  constexpr types::boundary_id top_boundary = 2 * dim - 1;
+
+  // The component of the displacement normal to the top surface: u_y in
+  // 2D (the plane of the paper), u_z in 3D (x along the track, y across).
+  template <int dim>
+  constexpr unsigned int vertical = dim - 1;
+
+  // A region of the top surface: an interval of x in 2D, a rectangle of
+  // (x, y) in 3D, given by its lower and upper corners.
+  template <int dim>
+  struct SurfaceRegion
+  {
+    Point<dim - 1> lower, upper;
+  };
+  template <int dim>
+  using SurfaceRegions = std::vector<SurfaceRegion<dim>>;
 
   // Whether face f of `cell` lies on the block's top surface, the only
   // one the indenter acts on.
@@ -94,14 +116,19 @@ namespace viscoslide
   inline bool
   is_top_face(const CellIterator &cell, const unsigned int f)
   {
+    constexpr int dim = std::decay_t<decltype(*cell)>::dimension;
     return cell->face(f)->at_boundary() &&
-           cell->face(f)->boundary_id() == top_boundary;
+           cell->face(f)->boundary_id() == top_boundary<dim>;
   }
 
-  // The block -W/2 < x < W/2, -H < y < 0 in square coarse cells.
+  // The block -W/2 < x < W/2, -H < y < 0 in square coarse cells; in 3D
+  // -W/2 < x < W/2, -L/2 < y < L/2 (L the Geometry's length()),
+  // -H < z < 0. The boundary ids are GridGenerator's colours: in 3D the
+  // sides across the track are 2 and 3, the bottom 4 and the top 5.
+  template <int dim>
   void
-  make_block(parallel::distributed::Triangulation<2> &triangulation,
-             const Parameters::AllParameters         &prm);
+  make_block(parallel::distributed::Triangulation<dim> &triangulation,
+             const Parameters::AllParameters           &prm);
 
   // Flags cells for refinement and coarsening so that the cell size is the
   // finest surface cell at the contact edges (x-intervals on the surface)
@@ -112,10 +139,12 @@ namespace viscoslide
   // margin leaves the mesh as it is. With Mesh/Uniform
   // surface the whole top counts as an edge. Returns whether any cell on
   // any process will change.
+  template <int dim>
   bool
-  flag_cells_near_edges(parallel::distributed::Triangulation<2> &triangulation,
-                        const std::vector<std::pair<double, double>> &edges,
-                        const Parameters::AllParameters              &prm);
+  flag_cells_near_edges(
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const SurfaceRegions<dim>                 &edges,
+    const Parameters::AllParameters           &prm);
 
   // After a converged solve: adapts the mesh to the new solution and
   // solves again, until the mesh stays or max_cycles times. Returns the

@@ -9,6 +9,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <viscoslide/indenter.h>
@@ -22,7 +24,8 @@ namespace viscoslide
 {
   using namespace dealii;
 
-  // Forces are per unit length (2D), in internal units.
+  // Forces are per unit length in 2D, in internal units. In 3D the contact
+  // length is the contact area.
   struct SurfaceQuantities
   {
     double normal_force; // Fn = integral of p = -p_LJ (compressive > 0)
@@ -46,34 +49,40 @@ namespace viscoslide
     double x, gap, pressure, u_y;
   };
 
+  // u_y below is the vertical displacement, u_z in 3D; x the coordinate
+  // along the track. In 3D the profile is the track's centre line y = 0.
+  template <int dim>
   class SurfacePostprocessor
   {
   public:
+    // In 3D the indenter is stretched across the track by `elongation`
+    // (apex_distance()).
     SurfacePostprocessor(const InteractionLaw &law,
                          const Indenter       &indenter,
                          double                eps,
                          double                contact_gap,
                          unsigned int          face_quadrature_points,
-                         types::boundary_id    top_boundary);
+                         types::boundary_id    top_boundary,
+                         double                elongation = 1.);
 
     SurfaceQuantities
-    integrate(const DoFHandler<2>                 &dof_handler,
+    integrate(const DoFHandler<dim>               &dof_handler,
               const TrilinosWrappers::MPI::Vector &solution,
               double                               delta,
               double                               s) const;
 
-    // Points along the whole top surface, sorted by x, complete on rank 0
-    // (empty elsewhere).
+    // Points along the whole top surface (in 3D its centre line), sorted
+    // by x, complete on rank 0 (empty elsewhere).
     std::vector<ProfilePoint>
-    profile(const DoFHandler<2>                 &dof_handler,
+    profile(const DoFHandler<dim>               &dof_handler,
             const TrilinosWrappers::MPI::Vector &solution,
             double                               delta,
             double                               s) const;
 
-    // x-intervals of the top faces whose gap range overlaps [g_lo, g_hi],
+    // The regions of the top faces whose gap range overlaps [g_lo, g_hi],
     // gathered from all processes: the contact edges the mesh follows.
-    std::vector<std::pair<double, double>>
-    faces_in_gap_band(const DoFHandler<2>                 &dof_handler,
+    SurfaceRegions<dim>
+    faces_in_gap_band(const DoFHandler<dim>               &dof_handler,
                       const TrilinosWrappers::MPI::Vector &solution,
                       double                               delta,
                       double                               s,
@@ -81,15 +90,38 @@ namespace viscoslide
                       double                               g_hi) const;
 
   private:
-    // Calls f(cell, face, x, gap, u_y) with 5 equally spaced samples on
-    // every locally owned top face.
+    // The gap at a surface point p displaced vertically by u.
+    double
+    gap_at(const Point<dim> &p, double u, double delta, double s) const
+    {
+      return gap(indenter, eps, delta, 0., apex_distance(p, s, elongation), u);
+    }
+    // dh/dx at p: the profile's slope along the track.
+    double
+    slope_at(const Point<dim> &p, double s) const;
+
+    // Calls f(cell, face, points, gap, u_y) with equally spaced samples
+    // (5 per direction) on every locally owned top face.
     template <typename Function>
     void
-    for_each_sampled_face(const DoFHandler<2>                 &dofs,
+    for_each_sampled_face(const DoFHandler<dim>               &dofs,
                           const TrilinosWrappers::MPI::Vector &u,
                           double                               delta,
                           double                               s,
                           const Function                      &f) const;
+
+    // The contact set's measure and extent from samples on each face.
+    struct ContactSet
+    {
+      double measure = 0., x_trail, x_lead, y_half = 0.;
+    };
+    void
+    add_contact_samples(const FEFaceValues<dim>   &values,
+                        const std::vector<double> &u,
+                        double                     delta,
+                        double                     s,
+                        ContactSet                &set,
+                        double                    &g_min) const;
 
     const InteractionLaw    &law;
     const Indenter          &indenter;
@@ -97,6 +129,7 @@ namespace viscoslide
     const double             contact_gap;
     const unsigned int       n_face_points;
     const types::boundary_id top;
+    const double             elongation;
   };
 
   // The surface profile CSV (x_over_R, gap_over_eps, p_hat, u_y_over_eps)

@@ -3,7 +3,9 @@
 // in source/surface_coupling.cc).
 //
 //  * The traction law's face term -<p(g), v_y>_top and its tangent, with
-//    the gap g = h(x - s) - delta - u_y (doc/conventions.md).
+//    the gap g = h(x - s) - delta - u_y (doc/conventions.md). In 3D u_y is
+//    read as the vertical u_z and h(x - s) as the body of revolution
+//    (apex_distance()); the component is vertical<dim> throughout.
 //  * The control of the indenter. Displacement: delta is given. Force: delta
 //    is an unknown and F_n(u, delta) = F0 the extra equation. Spring: force
 //    control with F0 + k (delta0 - delta) as the target. Force control
@@ -49,6 +51,7 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  template <int dim>
   class SurfaceCoupling
   {
     friend class boost::serialization::access;
@@ -60,7 +63,7 @@ namespace viscoslide
                     const Scales                    &scales,
                     const InteractionLaw            &law,
                     const Indenter                  &indenter,
-                    const SurfacePostprocessor      &postprocessor,
+                    const SurfacePostprocessor<dim> &postprocessor,
                     MPI_Comm                         comm);
 
     // --- control of the indenter
@@ -119,7 +122,7 @@ namespace viscoslide
 
     // Quadrature and update flags of the FEFaceValues that
     // add_face_terms() is given.
-    const Quadrature<1> &
+    const Quadrature<dim - 1> &
     face_quadrature() const
     {
       return quadrature;
@@ -148,20 +151,20 @@ namespace viscoslide
     // Zeroes what copy_local_to_global() accumulates.
     void
     start_assembly();
-    // Adds, on the top face `face_values` is reinit'ed on (component 1 of
-    // the solver's element is u_y),
+    // Adds, on the top face `face_values` is reinit'ed on (component
+    // vertical<dim> of the solver's element is u_y),
     //   -<p(g), v_y> + c <u_y - u_y^anchor, v_y>
     // to cell_rhs (as -R) and its tangent to cell_matrix. The dashpot term
     // acts only during relax().
     void
-    add_face_terms(const FEFaceValuesBase<2> &face_values,
-                   const VectorType          &solution,
-                   double                     delta,
-                   double                     s,
-                   bool                       with_matrix,
-                   FullMatrix<double>        &cell_matrix,
-                   Vector<double>            &cell_rhs,
-                   LocalTerms                &local) const;
+    add_face_terms(const FEFaceValuesBase<dim> &face_values,
+                   const VectorType            &solution,
+                   double                       delta,
+                   double                       s,
+                   bool                         with_matrix,
+                   FullMatrix<double>          &cell_matrix,
+                   Vector<double>              &cell_rhs,
+                   LocalTerms                  &local) const;
     // Adds a cell's local system (its matrix only if with_matrix) to the
     // solver's system, and its border terms to the coupling's.
     void
@@ -235,9 +238,9 @@ namespace viscoslide
     // the gap per iteration. So no surface node of `predicted` (at delta,
     // s) is left closer than the smaller of eps and its gap in `last` (at
     // last_delta, last_s). `last` is ghosted, `predicted` not; both live on
-    // `dof_handler`, whose element's component 1 is u_y.
+    // `dof_handler`, whose element's component vertical<dim> is u_y.
     void
-    limit_predicted_closing(const DoFHandler<2>             &dof_handler,
+    limit_predicted_closing(const DoFHandler<dim>           &dof_handler,
                             const AffineConstraints<double> &constraints,
                             const VectorType                &last,
                             double                           last_delta,
@@ -251,7 +254,7 @@ namespace viscoslide
     // of surface_window() and the model of window_model().
     void
     attach(ReusedFactorization             &solver,
-           const DoFHandler<2>             &dof_handler,
+           const DoFHandler<dim>           &dof_handler,
            const AffineConstraints<double> &constraints,
            const VectorType                &solution,
            const double                    &delta,
@@ -262,19 +265,19 @@ namespace viscoslide
     // T and of delta, for ReusedFactorization's Newton iterations on T
     // (the unknowns outside T held). Without terms within relax().
     WindowModel
-    window_model(const DoFHandler<2>             &dof_handler,
+    window_model(const DoFHandler<dim>           &dof_handler,
                  const AffineConstraints<double> &constraints,
                  const VectorType                &solution,
                  double                           delta,
                  double                           s,
                  const std::vector<int>          &T) const;
 
-    // The locally owned unknowns the face terms act on: u_y (component 1
-    // of the element of `dof_handler`) on the top surface, less the
-    // constrained ones. Two Jacobians that differ in their surface terms
+    // The locally owned unknowns the face terms act on: u_y (component
+    // vertical<dim> of the element of `dof_handler`) on the top surface,
+    // less the constrained ones. Two Jacobians that differ in their surface terms
     // alone differ only on these rows and columns (ReusedFactorization).
     IndexSet
-    surface_unknowns(const DoFHandler<2>             &dof_handler,
+    surface_unknowns(const DoFHandler<dim>           &dof_handler,
                      const AffineConstraints<double> &constraints) const;
     // The gap, in eps, that bounds surface_window().
     static constexpr double window_gap = 20.;
@@ -291,7 +294,7 @@ namespace viscoslide
     // next. While relax() runs, all of them, up to whole_window of them: its
     // dashpot acts everywhere.
     IndexSet
-    surface_window(const DoFHandler<2>             &dof_handler,
+    surface_window(const DoFHandler<dim>           &dof_handler,
                    const AffineConstraints<double> &constraints,
                    const VectorType                &solution,
                    double                           delta,
@@ -299,25 +302,24 @@ namespace viscoslide
 
     // --- the mesh
 
-    // The contact edges: the x-intervals of the top faces whose gap lies in
+    // The contact edges: the regions of the top faces whose gap lies in
     // the Mesh edge band, on every process; before contact the point under
     // the apex.
-    std::vector<std::pair<double, double>>
-    contact_edges(const DoFHandler<2> &dof_handler,
-                  const VectorType    &solution,
-                  double               delta,
-                  double               s) const;
+    SurfaceRegions<dim>
+    contact_edges(const DoFHandler<dim> &dof_handler,
+                  const VectorType      &solution,
+                  double                 delta,
+                  double                 s) const;
     // Flags the cells at the contact edges, and at the intervals
     // `expected` where a solver expects them next, for
     // flag_cells_near_edges(). Returns whether the mesh will change.
     bool
-    flag_contact_edges(
-      parallel::distributed::Triangulation<2>      &triangulation,
-      const DoFHandler<2>                          &dof_handler,
-      const VectorType                             &solution,
-      double                                        delta,
-      double                                        s,
-      const std::vector<std::pair<double, double>> &expected = {}) const;
+    flag_contact_edges(parallel::distributed::Triangulation<dim> &triangulation,
+                       const DoFHandler<dim>                     &dof_handler,
+                       const VectorType                          &solution,
+                       double                                     delta,
+                       double                                     s,
+                       const SurfaceRegions<dim> &expected = {}) const;
 
     // The control's state, for a checkpoint.
     template <class Archive>
@@ -330,17 +332,21 @@ namespace viscoslide
   private:
     NewtonProblem
     newton_problem(const System &system);
-    // The traction p(g) and dp/dg at a surface point at x displaced by u_y.
+    // The gap at a surface point p displaced vertically by u.
+    double
+    gap_at(const Point<dim> &p, double u, double delta, double s) const;
+    // The traction p(g) and dp/dg there.
     std::pair<double, double>
-    law_at(double x, double u_y, double delta, double s) const;
+    law_at(const Point<dim> &p, double u, double delta, double s) const;
     // The residual norm Newton's method accepts.
     double
     tolerance() const;
-    // Calls f(dof, x) for the locally owned, unconstrained u_y unknowns of
-    // the top surface, x their abscissa; a node shared by two faces twice.
+    // Calls f(dof, p) for the locally owned, unconstrained vertical
+    // unknowns of the top surface, p their support point; a node shared by
+    // several faces once per face.
     template <typename Function>
     void
-    for_each_surface_unknown(const DoFHandler<2>             &dof_handler,
+    for_each_surface_unknown(const DoFHandler<dim>           &dof_handler,
                              const AffineConstraints<double> &constraints,
                              const Function                  &f) const;
 
@@ -348,9 +354,9 @@ namespace viscoslide
     const Scales                    &scales;
     const InteractionLaw            &traction_law;
     const Indenter                  &profile;
-    const SurfacePostprocessor      &postprocessor;
+    const SurfacePostprocessor<dim> &postprocessor;
     MPI_Comm                         comm;
-    const QGauss<1>                  quadrature;
+    const QGauss<dim - 1>            quadrature;
 
     LoadControl control;
 

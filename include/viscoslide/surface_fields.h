@@ -20,12 +20,14 @@ namespace viscoslide
   using namespace dealii;
 
   // p_hat and gap_over_eps on the locally owned top faces, from u_y (the
-  // solution's component 1) with the indenter at approach delta and
-  // position s; step `counter` of the collection `name`.
+  // solution's component vertical<dim>) with the indenter at approach
+  // delta and position s (in 3D stretched by `elongation` across the
+  // track); step `counter` of the collection `name`.
+  template <int dim>
   void
   write_surface_fields(OutputWriter                        &writer,
                        const std::string                   &name,
-                       const DoFHandler<2>                 &dof_handler,
+                       const DoFHandler<dim>               &dof_handler,
                        const TrilinosWrappers::MPI::Vector &solution,
                        const InteractionLaw                &law,
                        const Indenter                      &indenter,
@@ -33,7 +35,8 @@ namespace viscoslide
                        double                               delta,
                        double                               s,
                        unsigned int                         counter,
-                       double                               time);
+                       double                               time,
+                       double                               elongation = 1.);
 } // namespace viscoslide
 
 #endif

@@ -29,7 +29,7 @@ namespace viscoslide
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     VectorTools::interpolate_boundary_values(dof_handler,
-                                             bottom_boundary,
+                                             bottom_boundary<dim>,
                                              Functions::ZeroFunction<dim>(dim),
                                              constraints);
     constraints.close();
@@ -92,14 +92,14 @@ namespace viscoslide
                             update_gradients | update_JxW_values);
     FEFaceValues<dim>                face_values(fe,
                                   coupling.face_quadrature(),
-                                  SurfaceCoupling::face_update_flags());
+                                  SurfaceCoupling<dim>::face_update_flags());
     const FEValuesExtractors::Vector displacement(0);
 
-    const unsigned int          dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int          n_q           = quadrature.size();
-    FullMatrix<double>          cell_matrix(dofs_per_cell, dofs_per_cell);
-    Vector<double>              cell_rhs(dofs_per_cell);
-    SurfaceCoupling::LocalTerms surface_terms;
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int               n_q           = quadrature.size();
+    FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
+    Vector<double>                   cell_rhs(dofs_per_cell);
+    SurfaceCoupling<dim>::LocalTerms surface_terms;
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<types::global_dof_index> history_dofs(
       history_fe.n_dofs_per_cell());
@@ -300,7 +300,7 @@ namespace viscoslide
   }
 
 
-  SurfaceCoupling::System
+  SurfaceCoupling<ContactProblem::dim>::System
   ContactProblem::newton_system()
   {
     return {solution,

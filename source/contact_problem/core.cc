@@ -32,7 +32,7 @@ namespace viscoslide
                     scales.eps,
                     prm.adhesion.contact_gap,
                     prm.adhesion.face_quadrature_points,
-                    top_boundary)
+                    top_boundary<dim>)
     , coupling(prm, scales, law, indenter, postprocessor, mpi_communicator)
     , triangulation(mpi_communicator,
                     Triangulation<dim>::limit_level_difference_at_vertices)

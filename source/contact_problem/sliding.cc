@@ -157,7 +157,8 @@ namespace viscoslide
         plan_slide();
         if (prm.sliding.control != Parameters::Control::displacement)
           coupling.hold_force(last_quantities.normal_force,
-                              SurfaceCoupling::spring_stiffness_of(prm, scales),
+                              SurfaceCoupling<dim>::spring_stiffness_of(prm,
+                                                                        scales),
                               committed.delta);
         samples.clear();
         history_rows = 0;
@@ -304,7 +305,8 @@ namespace viscoslide
           }
         if (prm.sliding.control != Parameters::Control::displacement)
           coupling.hold_force(last_quantities.normal_force,
-                              SurfaceCoupling::spring_stiffness_of(prm, scales),
+                              SurfaceCoupling<dim>::spring_stiffness_of(prm,
+                                                                        scales),
                               committed.delta);
         program_segment = 0;
         segment_done    = 0.;

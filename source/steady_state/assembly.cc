@@ -20,16 +20,27 @@ namespace viscoslide
   using ViscousStrain::components_per_arm;
   using ViscousStrain::first_component;
 
+  namespace
+  {
+    // The number of values that describe a cell's shape: the offsets of
+    // its vertices from the first.
+    template <int dim>
+    constexpr unsigned int
+      shape_size = (GeometryInfo<dim>::vertices_per_cell - 1) * dim;
+  } // namespace
+
   // What every cell and face of one assembly shares. Per strain component
   // c of arm k: the arm's relaxation length V tau_k, the advection
   // coefficient of -V tau_k d/dx written as the vector beta = (-V tau_k, 0)
   // of beta . grad, and the row scale E_k (the arm modulus, which makes the
   // strain rows forces).
-  struct SteadyStateSolver::AssemblyCoefficients
+  template <int dim>
+  struct SteadyStateSolver<dim>::AssemblyCoefficients
   {
-    std::vector<double>       ell, row_scale;
-    SymmetricTensor<4, 2>     C0, C_sum;
-    std::vector<unsigned int> component; // of each local dof
+    std::vector<double>                  ell, row_scale;
+    SymmetricTensor<4, dim>              C0, C_sum;
+    std::vector<SymmetricTensor<4, dim>> C_arm;
+    std::vector<unsigned int>            component; // of each local dof
     // The local dofs of each strain component.
     std::vector<std::vector<unsigned int>> strain_dofs;
     // The resolution of a cell's shape (see AssemblyScratch).
@@ -41,14 +52,14 @@ namespace viscoslide
   {
     // The offsets of a cell's vertices from its first, in units of the
     // shape quantum: equal for two cells of one shape.
-    template <typename Iterator, typename Coefficients>
-    std::array<long long, 6>
+    template <int dim, typename Iterator, typename Coefficients>
+    std::array<long long, shape_size<dim>>
     shape_of(const Iterator &cell, const Coefficients &coefficients)
     {
-      std::array<long long, 6> shape;
-      for (unsigned int v = 1; v < 4; ++v)
-        for (unsigned int d = 0; d < 2; ++d)
-          shape[2 * (v - 1) + d] =
+      std::array<long long, shape_size<dim>> shape;
+      for (unsigned int v = 1; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+        for (unsigned int d = 0; d < dim; ++d)
+          shape[dim * (v - 1) + d] =
             std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) /
                          coefficients.shape_quantum);
       return shape;
@@ -57,11 +68,12 @@ namespace viscoslide
 
 
   // FEValues objects and work arrays; copied per thread by mesh_loop.
-  struct SteadyStateSolver::AssemblyScratch
+  template <int dim>
+  struct SteadyStateSolver<dim>::AssemblyScratch
   {
-    AssemblyScratch(const FiniteElement<2> &fe,
-                    const Quadrature<2>    &quadrature,
-                    const Quadrature<1>    &flux_quadrature)
+    AssemblyScratch(const FiniteElement<dim>  &fe,
+                    const Quadrature<dim>     &quadrature,
+                    const Quadrature<dim - 1> &flux_quadrature)
       : fe_values(fe,
                   quadrature,
                   update_values | update_gradients | update_JxW_values)
@@ -73,7 +85,8 @@ namespace viscoslide
       , projected_grad_q(quadrature.size())
       , grad_phi(quadrature.size(), fe.n_dofs_per_cell())
       , projected_grad(quadrature.size(), fe.n_dofs_per_cell())
-      , C_arm_i((fe.n_components() - first_component) / components_per_arm)
+      , C_arm_i((fe.n_components() - ViscousStrain::first_component<dim>) /
+                ViscousStrain::components_per_arm<dim>)
     {
     }
 
@@ -89,7 +102,8 @@ namespace viscoslide
     // and the graded mesh has few shapes among its thousands of cells. A
     // shape is the offsets of its vertices from the first, in units of
     // shape_quantum.
-    std::map<std::array<long long, 6>, FullMatrix<double>> matrix_of_shape;
+    std::map<std::array<long long, shape_size<dim>>, FullMatrix<double>>
+      matrix_of_shape;
     // The same for the flux blocks of interior faces, by the shapes of the
     // two cells, their offset and the face numbers.
     struct FaceBlock
@@ -97,17 +111,19 @@ namespace viscoslide
       bool               upwind_is_mine = false;
       FullMatrix<double> matrix;
     };
-    std::map<std::array<long long, 18>, FaceBlock> block_of_pair;
-    FEValues<2>                                    fe_values;
-    FEInterfaceValues<2>                           interface_values;
-    std::vector<SymmetricTensor<2, 2>>             grad_phi_q, projected_grad_q;
-    Table<2, SymmetricTensor<2, 2>>                grad_phi, projected_grad;
-    std::vector<SymmetricTensor<2, 2>>             C_arm_i; // of each arm
+    static constexpr unsigned int pair_size = 2 * shape_size<dim> + dim + 4;
+    std::map<std::array<long long, pair_size>, FaceBlock> block_of_pair;
+    FEValues<dim>                                         fe_values;
+    FEInterfaceValues<dim>                                interface_values;
+    std::vector<SymmetricTensor<2, dim>> grad_phi_q, projected_grad_q;
+    Table<2, SymmetricTensor<2, dim>>    grad_phi, projected_grad;
+    std::vector<SymmetricTensor<2, dim>> C_arm_i; // of each arm
   };
 
 
   // A cell's matrix, and the blocks of the faces assembled with it.
-  struct SteadyStateSolver::AssemblyCopy
+  template <int dim>
+  struct SteadyStateSolver<dim>::AssemblyCopy
   {
     struct Face
     {
@@ -139,8 +155,9 @@ namespace viscoslide
   // All but the surface terms are linear in the unknowns: their matrix A is
   // assembled once per speed and mesh (assemble_bulk), their residual is
   // -A x, and each Newton iteration assembles the surface alone.
+  template <int dim>
   void
-  SteadyStateSolver::assemble(const bool with_matrix)
+  SteadyStateSolver<dim>::assemble(const bool with_matrix)
   {
     if (bulk_speed != V_hat)
       assemble_bulk();
@@ -156,14 +173,14 @@ namespace viscoslide
     constraints.set_zero(system_rhs);
 
     coupling.start_assembly();
-    FEFaceValues<dim>                    top_values(fe,
+    FEFaceValues<dim>                         top_values(fe,
                                  coupling.face_quadrature(),
-                                 SurfaceCoupling::face_update_flags());
-    const unsigned int                   n = fe.n_dofs_per_cell();
-    FullMatrix<double>                   cell_matrix(n, n);
-    Vector<double>                       cell_rhs(n);
-    SurfaceCoupling::LocalTerms          surface;
-    std::vector<types::global_dof_index> dofs(n);
+                                 SurfaceCoupling<dim>::face_update_flags());
+    const unsigned int                        n = fe.n_dofs_per_cell();
+    FullMatrix<double>                        cell_matrix(n, n);
+    Vector<double>                            cell_rhs(n);
+    typename SurfaceCoupling<dim>::LocalTerms surface;
+    std::vector<types::global_dof_index>      dofs(n);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
@@ -198,15 +215,16 @@ namespace viscoslide
   // The coefficients of the bulk at the present speed: each strain
   // component's relaxation length and row scale, the stiffnesses, and
   // which shape functions belong to which component.
-  SteadyStateSolver::AssemblyCoefficients
-  SteadyStateSolver::assembly_coefficients() const
+  template <int dim>
+  typename SteadyStateSolver<dim>::AssemblyCoefficients
+  SteadyStateSolver<dim>::assembly_coefficients() const
   {
     AssemblyCoefficients coefficients;
     coefficients.ell.resize(n_strain_components);
     coefficients.row_scale.resize(n_strain_components);
     for (unsigned int c = 0; c < n_strain_components; ++c)
       {
-        const unsigned int arm = c / components_per_arm;
+        const unsigned int arm = c / components_per_arm<dim>;
         coefficients.ell[c] =
           V_hat * scales.eps / scales.tau_ref * material.relaxation_time(arm);
         coefficients.row_scale[c] = material.arm_modulus(arm);
@@ -214,17 +232,19 @@ namespace viscoslide
     // A ten-billionth of the finest cell: the vertices' rounding is far
     // below it, a change of shape that matters far above it.
     coefficients.shape_quantum = 1e-10 * prm.mesh.finest_cell;
-    coefficients.C0            = material.relaxed_stiffness();
-    coefficients.C_sum         = material.arm_stiffness(0);
+    coefficients.C0            = material.relaxed_stiffness_of<dim>();
+    for (unsigned int a = 0; a < material.n_arms(); ++a)
+      coefficients.C_arm.push_back(material.arm_stiffness_of<dim>(a));
+    coefficients.C_sum = coefficients.C_arm[0];
     for (unsigned int a = 1; a < material.n_arms(); ++a)
-      coefficients.C_sum += material.arm_stiffness(a);
+      coefficients.C_sum += coefficients.C_arm[a];
     coefficients.strain_dofs.resize(n_strain_components);
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       {
         const unsigned int c = fe.system_to_component_index(i).first;
         coefficients.component.push_back(c);
-        if (c >= first_component)
-          coefficients.strain_dofs[c - first_component].push_back(i);
+        if (c >= first_component<dim>)
+          coefficients.strain_dofs[c - first_component<dim>].push_back(i);
       }
 
     return coefficients;
@@ -234,15 +254,16 @@ namespace viscoslide
   // The matrix of the linear terms at the present speed, on MeshWorker's
   // mesh_loop: cells, the upwind fluxes of the interior faces, the outflow
   // boundary.
+  template <int dim>
   void
-  SteadyStateSolver::assemble_bulk()
+  SteadyStateSolver<dim>::assemble_bulk()
   {
     TimerOutput::Scope t(timer, "steady: assemble bulk");
     bulk_matrix = 0;
 
     const AssemblyCoefficients coefficients = assembly_coefficients();
 
-    using Iterator = DoFHandler<dim>::active_cell_iterator;
+    using Iterator = CellIterator;
     const auto cell_worker =
       [&](const Iterator &cell, AssemblyScratch &scratch, AssemblyCopy &copy) {
         assemble_cell(cell, coefficients, scratch, copy);
@@ -299,9 +320,11 @@ namespace viscoslide
   // eps(phi_i) and the projection Pi eps(phi_i) that the arm sees
   // (viscous_strain.h) at each quadrature point of the cell scratch's
   // FEValues was reinitialized on, for the displacement shape functions.
+  template <int dim>
   void
-  SteadyStateSolver::strain_gradients(const AssemblyCoefficients &coefficients,
-                                      AssemblyScratch            &scratch) const
+  SteadyStateSolver<dim>::strain_gradients(
+    const AssemblyCoefficients &coefficients,
+    AssemblyScratch            &scratch) const
   {
     const FEValues<dim>             &fe_values = scratch.fe_values;
     const FEValuesExtractors::Vector displacement(0);
@@ -311,7 +334,7 @@ namespace viscoslide
     const FullMatrix<double> P =
       ViscousStrain::projection(fe_values, strain_basis);
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (coefficients.component[i] < first_component)
+      if (coefficients.component[i] < first_component<dim>)
         {
           for (unsigned int q = 0; q < n_q; ++q)
             grad_phi_q[q] = fe_values[displacement].symmetric_gradient(i, q);
@@ -327,12 +350,13 @@ namespace viscoslide
 
   // The bulk: elasticity of the relaxed spring and the arms, and the
   // reaction and advection terms of the viscous strain inside the cell.
+  template <int dim>
   void
-  SteadyStateSolver::assemble_cell(
-    const DoFHandler<dim>::active_cell_iterator &cell,
-    const AssemblyCoefficients                  &coefficients,
-    AssemblyScratch                             &scratch,
-    AssemblyCopy                                &copy) const
+  SteadyStateSolver<dim>::assemble_cell(
+    const CellIterator         &cell,
+    const AssemblyCoefficients &coefficients,
+    AssemblyScratch            &scratch,
+    AssemblyCopy               &copy) const
   {
     const auto &ell = coefficients.ell, &row_scale = coefficients.row_scale;
     const auto &C0 = coefficients.C0, &C_sum = coefficients.C_sum;
@@ -344,7 +368,7 @@ namespace viscoslide
 
     copy.faces.clear();
     cell->get_dof_indices(copy.dofs);
-    const auto shape = shape_of(cell, coefficients);
+    const auto shape = shape_of<dim>(cell, coefficients);
     if (const auto known = scratch.matrix_of_shape.find(shape);
         known != scratch.matrix_of_shape.end())
       {
@@ -360,36 +384,36 @@ namespace viscoslide
       {
         const double JxW = fe_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
-          if (component[i] < first_component)
+          if (component[i] < first_component<dim>)
             {
               const auto &grad_phi_i = scratch.grad_phi(q, i);
               const auto  C0_i       = C0 * grad_phi_i;
               const auto  C_sum_i    = C_sum * grad_phi_i;
               for (unsigned int a = 0; a < n_arms; ++a)
-                C_arm_i[a] = material.arm_stiffness(a) * grad_phi_i;
+                C_arm_i[a] = coefficients.C_arm[a] * grad_phi_i;
               for (unsigned int j = 0; j < n; ++j)
-                if (component[j] < first_component)
+                if (component[j] < first_component<dim>)
                   copy.cell_matrix(i, j) +=
                     (C0_i * scratch.grad_phi(q, j) +
                      C_sum_i * scratch.projected_grad(q, j)) *
                     JxW;
                 else
                   {
-                    const unsigned int c = component[j] - first_component;
+                    const unsigned int c = component[j] - first_component<dim>;
                     copy.cell_matrix(i, j) -=
-                      (C_arm_i[c / components_per_arm] *
-                       ViscousStrain::unit(c % components_per_arm)) *
+                      (C_arm_i[c / components_per_arm<dim>] *
+                       ViscousStrain::unit<dim>(c % components_per_arm<dim>)) *
                       fe_values.shape_value(j, q) * JxW;
                   }
             }
           else
             {
-              const unsigned int c       = component[i] - first_component;
-              const unsigned int cc      = c % components_per_arm;
+              const unsigned int c       = component[i] - first_component<dim>;
+              const unsigned int cc      = c % components_per_arm<dim>;
               const double       phi_i   = fe_values.shape_value(i, q);
               const double       phi_x_i = fe_values.shape_grad(i, q)[0];
               for (unsigned int j = 0; j < n; ++j)
-                if (component[j] < first_component)
+                if (component[j] < first_component<dim>)
                   copy.cell_matrix(i, j) -=
                     row_scale[c] *
                     ViscousStrain::component(scratch.grad_phi(q, j), cc) *
@@ -407,13 +431,14 @@ namespace viscoslide
   // On the outflow boundary (beta . n > 0, x = -W/2) the outflow flux with
   // the cell's own value. Inflow (x = +W/2) brings eps_v = 0: no term. The
   // top surface is SurfaceCoupling's (assemble()).
+  template <int dim>
   void
-  SteadyStateSolver::assemble_boundary(
-    const DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                           face_no,
-    const AssemblyCoefficients                  &coefficients,
-    AssemblyScratch                             &scratch,
-    AssemblyCopy                                &copy) const
+  SteadyStateSolver<dim>::assemble_boundary(
+    const CellIterator         &cell,
+    const unsigned int          face_no,
+    const AssemblyCoefficients &coefficients,
+    AssemblyScratch            &scratch,
+    AssemblyCopy               &copy) const
   {
     if (V_hat == 0. || is_top_face(cell, face_no))
       return;
@@ -443,17 +468,18 @@ namespace viscoslide
   // only: a locally owned cell sees each of its faces once, and the face's
   // other side is assembled from the neighbour (mesh_loop's "both" flags).
   // FEInterfaceValues pairs the quadrature points of hanging faces.
+  template <int dim>
   void
-  SteadyStateSolver::assemble_interface(
-    const DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                           face_no,
-    const unsigned int                           subface_no,
-    const DoFHandler<dim>::active_cell_iterator &neighbor,
-    const unsigned int                           neighbor_face_no,
-    const unsigned int                           neighbor_subface_no,
-    const AssemblyCoefficients                  &coefficients,
-    AssemblyScratch                             &scratch,
-    AssemblyCopy                                &copy) const
+  SteadyStateSolver<dim>::assemble_interface(
+    const CellIterator         &cell,
+    const unsigned int          face_no,
+    const unsigned int          subface_no,
+    const CellIterator         &neighbor,
+    const unsigned int          neighbor_face_no,
+    const unsigned int          neighbor_subface_no,
+    const AssemblyCoefficients &coefficients,
+    AssemblyScratch            &scratch,
+    AssemblyCopy               &copy) const
   {
     // Only the rows of a locally owned cell (checked before the costly
     // reinit).
@@ -461,19 +487,20 @@ namespace viscoslide
       return;
     // The block depends on the pair's geometry alone (see
     // AssemblyScratch::matrix_of_shape).
-    const auto                mine_shape = shape_of(cell, coefficients);
-    const auto                other      = shape_of(neighbor, coefficients);
-    std::array<long long, 18> pair;
+    constexpr unsigned int n          = shape_size<dim>;
+    const auto             mine_shape = shape_of<dim>(cell, coefficients);
+    const auto             other      = shape_of<dim>(neighbor, coefficients);
+    std::array<long long, AssemblyScratch::pair_size> pair;
     std::copy(mine_shape.begin(), mine_shape.end(), pair.begin());
-    std::copy(other.begin(), other.end(), pair.begin() + 6);
+    std::copy(other.begin(), other.end(), pair.begin() + n);
     for (unsigned int d = 0; d < dim; ++d)
-      pair[12 + d] =
+      pair[2 * n + d] =
         std::llround((neighbor->vertex(0)[d] - cell->vertex(0)[d]) /
                      coefficients.shape_quantum);
-    pair[14]                   = face_no;
-    pair[15]                   = subface_no;
-    pair[16]                   = neighbor_face_no;
-    pair[17]                   = neighbor_subface_no;
+    pair[2 * n + dim]          = face_no;
+    pair[2 * n + dim + 1]      = subface_no;
+    pair[2 * n + dim + 2]      = neighbor_face_no;
+    pair[2 * n + dim + 3]      = neighbor_subface_no;
     const auto &strain_dofs    = coefficients.strain_dofs;
     const auto [known, is_new] = scratch.block_of_pair.try_emplace(pair);
     auto &block                = known->second;
@@ -496,7 +523,7 @@ namespace viscoslide
       upwind_dofs(fe.n_dofs_per_cell());
     cell->get_dof_indices(mine_dofs);
     (block.upwind_is_mine ? cell : neighbor)->get_dof_indices(upwind_dofs);
-    AssemblyCopy::Face face;
+    typename AssemblyCopy::Face face;
     for (unsigned int c = 0; c < n_strain_components; ++c)
       for (const unsigned int i : strain_dofs[c])
         {
@@ -508,11 +535,12 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SteadyStateSolver::face_block(const FEInterfaceValues<dim> &fe_iv,
-                                const AssemblyCoefficients   &coefficients,
-                                bool                         &upwind_is_mine,
-                                FullMatrix<double>           &matrix) const
+  SteadyStateSolver<dim>::face_block(const FEInterfaceValues<dim> &fe_iv,
+                                     const AssemblyCoefficients   &coefficients,
+                                     bool               &upwind_is_mine,
+                                     FullMatrix<double> &matrix) const
   {
     // The faces are straight: beta . n has one sign on a face.
     upwind_is_mine          = fe_iv.normal(0)[0] < 0; // beta . n > 0
@@ -536,4 +564,8 @@ namespace viscoslide
             }
         }
   }
+
+
+  template class SteadyStateSolver<2>;
+  template class SteadyStateSolver<3>;
 } // namespace viscoslide

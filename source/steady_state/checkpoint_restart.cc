@@ -21,9 +21,11 @@ namespace viscoslide
   } // namespace
 
 
+  template <int dim>
   void
-  SteadyStateSolver::write_checkpoint(const std::string       &directory,
-                                      const StationCheckpoint &station) const
+  SteadyStateSolver<dim>::write_checkpoint(
+    const std::string       &directory,
+    const StationCheckpoint &station) const
   {
     TimerOutput::Scope t(timer, "steady: checkpoint");
     const std::string  tmp = Checkpoint::begin(directory, mpi_communicator);
@@ -47,8 +49,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   StationCheckpoint
-  SteadyStateSolver::read_checkpoint(const std::string &directory)
+  SteadyStateSolver<dim>::read_checkpoint(const std::string &directory)
   {
     std::string       state;
     const std::string dir =
@@ -61,9 +64,8 @@ namespace viscoslide
         edge_spans;
     });
     if (prm.sliding.control != Parameters::Control::displacement)
-      coupling.hold_force(force,
-                          SurfaceCoupling::spring_stiffness_of(prm, scales),
-                          spring);
+      coupling.hold_force(
+        force, SurfaceCoupling<dim>::spring_stiffness_of(prm, scales), spring);
 
     triangulation.clear();
     make_block(triangulation, prm);
@@ -82,4 +84,8 @@ namespace viscoslide
           << dof_handler.n_dofs() << " dofs" << std::endl;
     return station;
   }
+
+
+  template class SteadyStateSolver<2>;
+  template class SteadyStateSolver<3>;
 } // namespace viscoslide

@@ -13,8 +13,9 @@
 
 namespace viscoslide
 {
+  template <int dim>
   void
-  SteadyStateSolver::quadrature_fields(
+  SteadyStateSolver<dim>::quadrature_fields(
     const FEValues<dim>              &fe_values,
     std::vector<std::vector<double>> &fields) const
   {
@@ -28,28 +29,51 @@ namespace viscoslide
                            strain,
                            projected_strain);
     for (unsigned int q = 0; q < n_q; ++q)
-      {
-        ArmStress h;
-        double    rate = 0.;
-        for (unsigned int a = 0; a < material.n_arms(); ++a)
-          {
-            const auto h_a = material.arm_stress(
-              a, projected_strain[q] - ViscousStrain::of_arm(values[q], a));
-            h += h_a;
-            rate += material.dissipation_rate(a, h_a);
-          }
-        const auto sigma = material.stress(strain[q], h);
-        fields[0][q]     = rate;
-        fields[1][q]     = sigma[0][0];
-        fields[2][q]     = sigma[1][1];
-        fields[3][q]     = sigma[0][1];
-        fields[4][q]     = material.stress_zz(strain[q], h);
-      }
+      if constexpr (dim == 2)
+        {
+          // Plane strain: the arms' out-of-plane stress counts too.
+          ArmStress h;
+          double    rate = 0.;
+          for (unsigned int a = 0; a < material.n_arms(); ++a)
+            {
+              const auto h_a =
+                material.arm_stress(a,
+                                    projected_strain[q] -
+                                      ViscousStrain::of_arm<dim>(values[q], a));
+              h += h_a;
+              rate += material.dissipation_rate(a, h_a);
+            }
+          const auto sigma = material.stress(strain[q], h);
+          fields[0][q]     = rate;
+          fields[1][q]     = sigma[0][0];
+          fields[2][q]     = sigma[1][1];
+          fields[3][q]     = sigma[0][1];
+          fields[4][q]     = material.stress_zz(strain[q], h);
+        }
+      else
+        {
+          SymmetricTensor<2, dim> sigma =
+            material.relaxed_stiffness_of<dim>() * strain[q];
+          double rate = 0.;
+          for (unsigned int a = 0; a < material.n_arms(); ++a)
+            {
+              const SymmetricTensor<2, dim> h_a =
+                material.arm_stiffness_of<dim>(a) *
+                (projected_strain[q] -
+                 ViscousStrain::of_arm<dim>(values[q], a));
+              sigma += h_a;
+              rate += material.dissipation_rate(a, h_a);
+            }
+          fields[0][q] = rate;
+          for (unsigned int c = 0; c < 6; ++c)
+            fields[1 + c][q] = ViscousStrain::component(sigma, c);
+        }
   }
 
 
+  template <int dim>
   double
-  SteadyStateSolver::dissipation_rate() const
+  SteadyStateSolver<dim>::dissipation_rate() const
   {
     FEValues<dim> fe_values(
       fe, quadrature, update_values | update_gradients | update_JxW_values);
@@ -68,8 +92,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SteadyStateSolver::write_profile(const std::string &path) const
+  SteadyStateSolver<dim>::write_profile(const std::string &path) const
   {
     write_profile_csv(path,
                       postprocessor.profile(dof_handler, solution, delta, s),
@@ -80,14 +105,15 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SteadyStateSolver::write_fields(OutputWriter      &writer,
-                                  const unsigned int counter) const
+  SteadyStateSolver<dim>::write_fields(OutputWriter      &writer,
+                                       const unsigned int counter) const
   {
     TimerOutput::Scope       t(timer, "output");
-    std::vector<std::string> names{"displacement", "displacement"};
+    std::vector<std::string> names(dim, "displacement");
     for (unsigned int a = 0; a < material.n_arms(); ++a)
-      for (const std::string c : {"xx", "yy", "xy"})
+      for (const std::string &c : ViscousStrain::component_names<dim>())
         names.push_back("viscous_strain_" +
                         (material.n_arms() > 1 ? std::to_string(a + 1) + "_"
                                                : std::string()) +
@@ -95,8 +121,9 @@ namespace viscoslide
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(fe.n_components(),
                      DataComponentInterpretation::component_is_scalar);
-    interpretation[0] = interpretation[1] =
-      DataComponentInterpretation::component_is_part_of_vector;
+    for (unsigned int d = 0; d < dim; ++d)
+      interpretation[d] =
+        DataComponentInterpretation::component_is_part_of_vector;
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(solution,
@@ -118,8 +145,11 @@ namespace viscoslide
                          fe_values.reinit(cell);
                          quadrature_fields(fe_values, values);
                        });
-    const std::array<std::string, n_quadrature_fields> names_of{
-      {"dissipation_rate", "stress_xx", "stress_yy", "stress_xy", "stress_zz"}};
+    std::vector<std::string> names_of{"dissipation_rate"};
+    for (const std::string &c :
+         dim == 2 ? std::vector<std::string>{"xx", "yy", "xy", "zz"}
+                  : ViscousStrain::component_names<dim>())
+      names_of.push_back("stress_" + c);
     for (unsigned int k = 0; k < n_quadrature_fields; ++k)
       data_out.add_data_vector(recovery.dof_handler(),
                                recovered[k],
@@ -136,6 +166,11 @@ namespace viscoslide
                          delta,
                          s,
                          counter,
-                         V_hat);
+                         V_hat,
+                         prm.geometry.elongation);
   }
+
+
+  template class SteadyStateSolver<2>;
+  template class SteadyStateSolver<3>;
 } // namespace viscoslide

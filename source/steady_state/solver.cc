@@ -33,14 +33,15 @@ namespace viscoslide
   using ViscousStrain::first_component;
 
 
-  SteadyStateSolver::SteadyStateSolver(
-    const Parameters::AllParameters         &prm,
-    const Scales                            &scales,
-    const ViscoelasticSolid                 &material,
-    SurfaceCoupling                         &coupling,
-    const SurfacePostprocessor              &postprocessor,
-    parallel::distributed::Triangulation<2> &triangulation,
-    TimerOutput                             &timer)
+  template <int dim>
+  SteadyStateSolver<dim>::SteadyStateSolver(
+    const Parameters::AllParameters           &prm,
+    const Scales                              &scales,
+    const ViscoelasticSolid                   &material,
+    SurfaceCoupling<dim>                      &coupling,
+    const SurfacePostprocessor<dim>           &postprocessor,
+    parallel::distributed::Triangulation<dim> &triangulation,
+    TimerOutput                               &timer)
     : prm(prm)
     , scales(scales)
     , material(material)
@@ -51,7 +52,7 @@ namespace viscoslide
     , mpi_communicator(triangulation.get_communicator())
     , pcout(std::cout,
             dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , n_strain_components(components_per_arm * material.n_arms())
+    , n_strain_components(components_per_arm<dim> * material.n_arms())
     , fe(FE_Q<dim>(2),
          dim,
          FE_DGQ<dim>(prm.sliding.viscous_strain_degree),
@@ -62,16 +63,18 @@ namespace viscoslide
     , linear_solver(timer, mpi_communicator)
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first == first_component)
+      if (fe.system_to_component_index(i).first == first_component<dim>)
         strain_basis.push_back(i);
   }
 
 
-  SteadyStateSolver::~SteadyStateSolver() = default;
+  template <int dim>
+  SteadyStateSolver<dim>::~SteadyStateSolver() = default;
 
 
+  template <int dim>
   void
-  SteadyStateSolver::setup_system()
+  SteadyStateSolver<dim>::setup_system()
   {
     TimerOutput::Scope t(timer, "steady: setup");
     dof_handler.distribute_dofs(fe);
@@ -83,7 +86,7 @@ namespace viscoslide
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     VectorTools::interpolate_boundary_values(
       dof_handler,
-      bottom_boundary,
+      bottom_boundary<dim>,
       Functions::ZeroFunction<dim>(fe.n_components()),
       constraints,
       fe.component_mask(FEValuesExtractors::Vector(0)));
@@ -101,7 +104,8 @@ namespace viscoslide
     for (unsigned int c = 0; c < n_c; ++c)
       for (unsigned int d = 0; d < n_c; ++d)
         {
-          const bool strain_pair = c >= first_component && d >= first_component;
+          const bool strain_pair =
+            c >= first_component<dim> && d >= first_component<dim>;
           cell_coupling(c, d) =
             (!strain_pair || c == d) ? DoFTools::always : DoFTools::none;
           face_coupling(c, d) =
@@ -142,11 +146,12 @@ namespace viscoslide
 
   // u is copied dof by dof (same Q2 element); eps_v is the cell-wise L2
   // projection of eps(u), the relaxed state (V = 0) of the viscous strain.
+  template <int dim>
   void
-  SteadyStateSolver::initialize(const DoFHandler<dim>               &u_dofs,
-                                const TrilinosWrappers::MPI::Vector &u,
-                                const double                         delta,
-                                const double                         s)
+  SteadyStateSolver<dim>::initialize(const DoFHandler<dim> &u_dofs,
+                                     const TrilinosWrappers::MPI::Vector &u,
+                                     const double                         delta,
+                                     const double                         s)
   {
     setup_system();
     this->delta = delta;
@@ -166,8 +171,8 @@ namespace viscoslide
     std::vector<std::vector<unsigned int>> strain_dofs(n_strain_components);
     for (unsigned int i = 0; i < n; ++i)
       if (const unsigned int c = fe.system_to_component_index(i).first;
-          c >= first_component)
-        strain_dofs[c - first_component].push_back(i);
+          c >= first_component<dim>)
+        strain_dofs[c - first_component<dim>].push_back(i);
     const unsigned int m = strain_dofs[0].size();
     FullMatrix<double> mass(m, m);
     Vector<double>     rhs(m), coefficients(m);
@@ -176,10 +181,10 @@ namespace viscoslide
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const DoFHandler<dim>::active_cell_iterator u_cell(&triangulation,
-                                                             cell->level(),
-                                                             cell->index(),
-                                                             &u_dofs);
+          const CellIterator u_cell(&triangulation,
+                                    cell->level(),
+                                    cell->index(),
+                                    &u_dofs);
           values.reinit(cell);
           u_values.reinit(u_cell);
           u_cell->get_dof_values(u, u_local);
@@ -202,9 +207,10 @@ namespace viscoslide
                 for (unsigned int a = 0; a < m; ++a)
                   {
                     const double wa = values.shape_value(d[a], q);
-                    rhs(a) += ViscousStrain::component(strain[q],
-                                                       c % components_per_arm) *
-                              wa * values.JxW(q);
+                    rhs(a) +=
+                      ViscousStrain::component(strain[q],
+                                               c % components_per_arm<dim>) *
+                      wa * values.JxW(q);
                     for (unsigned int b = 0; b < m; ++b)
                       mass(a, b) +=
                         wa * values.shape_value(d[b], q) * values.JxW(q);
@@ -223,8 +229,24 @@ namespace viscoslide
 
 
 
+  template <int dim>
   void
-  SteadyStateSolver::solve_newton_system()
+  SteadyStateSolver<dim>::initialize_at_rest(const double delta, const double s)
+  {
+    setup_system();
+    this->delta = delta;
+    this->s     = s;
+    V_hat       = 0.;
+    solution    = 0.;
+    for (unsigned int i = 0; i < 64 && adapt_mesh(); ++i)
+      ;
+    update_quantities();
+  }
+
+
+  template <int dim>
+  void
+  SteadyStateSolver<dim>::solve_newton_system()
   {
     coupling.solve_bordered(linear_solver,
                             system_matrix,
@@ -234,8 +256,9 @@ namespace viscoslide
   }
 
 
-  SurfaceCoupling::System
-  SteadyStateSolver::newton_system()
+  template <int dim>
+  typename SurfaceCoupling<dim>::System
+  SteadyStateSolver<dim>::newton_system()
   {
     return {solution,
             delta,
@@ -248,8 +271,9 @@ namespace viscoslide
 
   // Relaxation serves a speed step across which a contact edge jumps, e.g.
   // the first one, where the trailing edge leaves the approach branch.
+  template <int dim>
   int
-  SteadyStateSolver::solve_newton_or_relax()
+  SteadyStateSolver<dim>::solve_newton_or_relax()
   {
     const int its = coupling.newton(newton_system(), pcout);
     if (its >= 0)
@@ -259,9 +283,9 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   bool
-  SteadyStateSolver::adapt_mesh(
-    const std::vector<std::pair<double, double>> &expected)
+  SteadyStateSolver<dim>::adapt_mesh(const SurfaceRegions<dim> &expected)
   {
     TimerOutput::Scope t(timer, "steady: adapt mesh");
     if (!coupling.flag_contact_edges(
@@ -281,20 +305,22 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SteadyStateSolver::record_edges()
+  SteadyStateSolver<dim>::record_edges()
   {
     const auto edges  = coupling.contact_edges(dof_handler, solution, delta, s);
-    double     lowest = edges[0].first, highest = edges[0].second;
-    for (const auto &[a, b] : edges)
+    double     lowest = edges[0].lower[0], highest = edges[0].upper[0];
+    for (const auto &edge : edges)
       {
-        lowest  = std::min(lowest, a);
-        highest = std::max(highest, b);
+        lowest  = std::min(lowest, edge.lower[0]);
+        highest = std::max(highest, edge.upper[0]);
       }
     const double middle = 0.5 * (lowest + highest);
     EdgeSpan     span{std::log(V_hat), {{highest, lowest, highest, lowest}}};
-    for (const auto &[a, b] : edges)
+    for (const auto &edge : edges)
       {
+        const double       a = edge.lower[0], b = edge.upper[0];
         const unsigned int side = a + b < 2 * middle ? 0 : 2;
         span.ends[side]         = std::min(span.ends[side], a);
         span.ends[side + 1]     = std::max(span.ends[side + 1], b);
@@ -305,10 +331,11 @@ namespace viscoslide
   }
 
 
-  std::vector<std::pair<double, double>>
-  SteadyStateSolver::expected_edges(const double next) const
+  template <int dim>
+  SurfaceRegions<dim>
+  SteadyStateSolver<dim>::expected_edges(const double next) const
   {
-    if (edge_spans.size() < 2 ||
+    if (dim != 2 || edge_spans.size() < 2 ||
         edge_spans[1].log_speed == edge_spans[0].log_speed)
       return {};
     const EdgeSpan &last = edge_spans[1], &before = edge_spans[0];
@@ -324,10 +351,13 @@ namespace viscoslide
     std::array<double, 4> ahead;
     for (unsigned int i = 0; i < 4; ++i)
       ahead[i] = last.ends[i] + ratio * (last.ends[i] - before.ends[i]);
-    std::vector<std::pair<double, double>> expected;
+    SurfaceRegions<dim> expected(2);
     for (const unsigned int side : {0, 2})
-      expected.emplace_back(std::min(last.ends[side], ahead[side]),
-                            std::max(last.ends[side + 1], ahead[side + 1]));
+      {
+        expected[side / 2].lower[0] = std::min(last.ends[side], ahead[side]);
+        expected[side / 2].upper[0] =
+          std::max(last.ends[side + 1], ahead[side + 1]);
+      }
     return expected;
   }
 
@@ -351,8 +381,9 @@ namespace viscoslide
   // cycles. Returns the Newton iterations; -1 if the step failed (the
   // caller restores the state it started from and shortens the step); -2
   // if it failed on an adapted mesh, where that state no longer fits.
+  template <int dim>
   int
-  SteadyStateSolver::solve_step(const std::string &what)
+  SteadyStateSolver<dim>::solve_step(const std::string &what)
   {
     const TrilinosWrappers::MPI::Vector backup(solution);
     const double                        delta0 = delta;
@@ -388,18 +419,19 @@ namespace viscoslide
           << std::setw(11)
           << std::abs(last_quantities.tangential_force /
                       last_quantities.normal_force)
-          << "  L_hat " << std::setw(11)
-          << last_quantities.contact_length / scales.R << "  Newton " << its
-          << "  dofs " << dof_handler.n_dofs() << "  factorizations "
+          << "  " << contact_column(dim) << " " << std::setw(11)
+          << last_quantities.contact_length / scales.contact << "  Newton "
+          << its << "  dofs " << dof_handler.n_dofs() << "  factorizations "
           << linear_solver.factorizations << "  surface solves "
           << linear_solver.surface_solves << std::endl;
     return its;
   }
 
 
+  template <int dim>
   bool
-  SteadyStateSolver::continue_to(const double                 target,
-                                 const std::function<void()> &on_converged)
+  SteadyStateSolver<dim>::continue_to(const double                 target,
+                                      const std::function<void()> &on_converged)
   {
     // The first speed: relaxation length V tau a tenth of the finest cell,
     // so that the relaxed start is close to its solution.
@@ -453,9 +485,11 @@ namespace viscoslide
   // force control, delta under displacement control. Steps are linear (the
   // load may change sign): the whole way first, halved on failure down to
   // a thousandth of it, doubled again after each success.
+  template <int dim>
   bool
-  SteadyStateSolver::continue_to_load(const double                 target,
-                                      const std::function<void()> &on_converged)
+  SteadyStateSolver<dim>::continue_to_load(
+    const double                 target,
+    const std::function<void()> &on_converged)
   {
     edge_spans.clear(); // they follow the speed
     const bool   force      = coupling.force_control();
@@ -498,9 +532,14 @@ namespace viscoslide
   }
 
 
+  template <int dim>
   void
-  SteadyStateSolver::update_quantities()
+  SteadyStateSolver<dim>::update_quantities()
   {
     last_quantities = postprocessor.integrate(dof_handler, solution, delta, s);
   }
+
+
+  template class SteadyStateSolver<2>;
+  template class SteadyStateSolver<3>;
 } // namespace viscoslide

@@ -4,39 +4,9 @@ namespace viscoslide
 {
   namespace ViscousStrain
   {
-    SymmetricTensor<2, 2>
-    unit(const unsigned int c)
-    {
-      SymmetricTensor<2, 2> t;
-      if (c == 2)
-        t[0][1] = 1.;
-      else
-        t[c][c] = 1.;
-      return t;
-    }
-
-
-    SymmetricTensor<2, 2>
-    tensor(const double xx, const double yy, const double xy)
-    {
-      SymmetricTensor<2, 2> t;
-      t[0][0] = xx;
-      t[1][1] = yy;
-      t[0][1] = xy;
-      return t;
-    }
-
-
-    SymmetricTensor<2, 2>
-    of_arm(const Vector<double> &v, const unsigned int arm)
-    {
-      const unsigned int c = first_component + components_per_arm * arm;
-      return tensor(v[c], v[c + 1], v[c + 2]);
-    }
-
-
+    template <int dim>
     FullMatrix<double>
-    projection(const FEValues<2>               &fe_values,
+    projection(const FEValues<dim>             &fe_values,
                const std::vector<unsigned int> &basis)
     {
       const unsigned int n_q = fe_values.n_quadrature_points, m = basis.size();
@@ -59,5 +29,11 @@ namespace viscoslide
           }
       return P;
     }
+
+
+    template FullMatrix<double>
+    projection(const FEValues<2> &, const std::vector<unsigned int> &);
+    template FullMatrix<double>
+    projection(const FEValues<3> &, const std::vector<unsigned int> &);
   } // namespace ViscousStrain
 } // namespace viscoslide

@@ -55,24 +55,25 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  // The same code in 2D (plane strain, a cylinder) and 3D (a body of
+  // revolution); u_y below is the vertical displacement, u_z in 3D.
+  template <int dim>
   class SteadyStateSolver : public SteadySliding
   {
   public:
-    static constexpr unsigned int dim = 2;
-
     // The solver takes over the coupling (whose control the caller sets
     // after initialize()) and the triangulation. [solver.cc]
-    SteadyStateSolver(const Parameters::AllParameters         &prm,
-                      const Scales                            &scales,
-                      const ViscoelasticSolid                 &material,
-                      SurfaceCoupling                         &coupling,
-                      const SurfacePostprocessor              &postprocessor,
-                      parallel::distributed::Triangulation<2> &triangulation,
-                      TimerOutput                             &timer);
+    SteadyStateSolver(const Parameters::AllParameters           &prm,
+                      const Scales                              &scales,
+                      const ViscoelasticSolid                   &material,
+                      SurfaceCoupling<dim>                      &coupling,
+                      const SurfacePostprocessor<dim>           &postprocessor,
+                      parallel::distributed::Triangulation<dim> &triangulation,
+                      TimerOutput                               &timer);
     ~SteadyStateSolver();
 
     // Starts from a relaxed equilibrium: the displacement u of a
-    // FESystem(FE_Q(2), 2) on the same triangulation, at approach delta with
+    // FESystem(FE_Q(2), dim) on the same triangulation, at approach delta with
     // the indenter at s; eps_v is the cell-wise L2 projection of eps(u),
     // the relaxed state. [solver.cc]
     void
@@ -80,6 +81,12 @@ namespace viscoslide
                const TrilinosWrappers::MPI::Vector &u,
                double                               delta,
                double                               s);
+
+    // Starts without a transient solver, as the 3D case does: the block at
+    // rest and undeformed (u = 0, eps_v = 0) at approach delta with the
+    // indenter at s, the mesh refined about the apex. [solver.cc]
+    void
+    initialize_at_rest(double delta, double s);
 
     // Continues the steady state from its present speed to V_hat in steps
     // no larger than the Continuation factor (shorter where Newton fails),
@@ -117,9 +124,10 @@ namespace viscoslide
     double
     dissipation_rate() const override;
     // At the quadrature points of the cell where fe_values stands: the
-    // dissipation density D, then stress xx, yy, xy and zz, from the
-    // equations' strains (the arms see Pi eps(u)). [output.cc]
-    static constexpr unsigned int n_quadrature_fields = 5;
+    // dissipation density D, then the stress (2D: xx, yy, xy and zz; 3D:
+    // xx, yy, zz, xy, xz, yz), from the equations' strains (the arms see
+    // Pi eps(u)). [output.cc]
+    static constexpr unsigned int n_quadrature_fields = dim == 2 ? 5 : 7;
     void
     quadrature_fields(const FEValues<dim>              &fe_values,
                       std::vector<std::vector<double>> &fields) const;
@@ -160,15 +168,15 @@ namespace viscoslide
     write_fields(OutputWriter &writer, unsigned int counter) const override;
 
   private:
-    // Whether face f of `cell` carries a viscous-strain flux: beta is
-    // horizontal, so the vertical faces alone.
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+
+    // Whether face f of a cell carries a viscous-strain flux: beta is along
+    // x, so the faces normal to x alone, faces 0 and 1 of the block's
+    // axis-parallel cells.
     static bool
-    carries_flux(const DoFHandler<dim>::active_cell_iterator &cell,
-                 const unsigned int                           f)
+    carries_flux(const CellIterator &, const unsigned int f)
     {
-      const Tensor<1, dim> along =
-        cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
-      return std::abs(along[1]) > std::abs(along[0]);
+      return f < 2;
     }
 
     // [solver.cc]
@@ -192,21 +200,21 @@ namespace viscoslide
     strain_gradients(const AssemblyCoefficients &coefficients,
                      AssemblyScratch            &scratch) const;
     void
-    assemble_cell(const DoFHandler<dim>::active_cell_iterator &cell,
-                  const AssemblyCoefficients                  &coefficients,
-                  AssemblyScratch                             &scratch,
-                  AssemblyCopy                                &copy) const;
+    assemble_cell(const CellIterator         &cell,
+                  const AssemblyCoefficients &coefficients,
+                  AssemblyScratch            &scratch,
+                  AssemblyCopy               &copy) const;
     void
-    assemble_boundary(const DoFHandler<dim>::active_cell_iterator &cell,
-                      unsigned int                                 face_no,
-                      const AssemblyCoefficients                  &coefficients,
-                      AssemblyScratch                             &scratch,
-                      AssemblyCopy                                &copy) const;
+    assemble_boundary(const CellIterator         &cell,
+                      unsigned int                face_no,
+                      const AssemblyCoefficients &coefficients,
+                      AssemblyScratch            &scratch,
+                      AssemblyCopy               &copy) const;
     void
-    assemble_interface(const DoFHandler<dim>::active_cell_iterator &cell,
-                       unsigned int                                 face_no,
-                       unsigned int                                 subface_no,
-                       const DoFHandler<dim>::active_cell_iterator &neighbor,
+    assemble_interface(const CellIterator         &cell,
+                       unsigned int                face_no,
+                       unsigned int                subface_no,
+                       const CellIterator         &neighbor,
                        unsigned int                neighbor_face_no,
                        unsigned int                neighbor_subface_no,
                        const AssemblyCoefficients &coefficients,
@@ -222,7 +230,7 @@ namespace viscoslide
     // [solver.cc]
     void
     solve_newton_system();
-    SurfaceCoupling::System
+    typename SurfaceCoupling<dim>::System
     newton_system();
     // Newton's method, else pseudo-transient relaxation, at the present
     // V_hat and load; the iterations used or -1.
@@ -233,13 +241,14 @@ namespace viscoslide
     // Adapts the mesh to the contact edges of the solution and to the
     // intervals `expected` (see expected_edges()); whether it changed.
     bool
-    adapt_mesh(const std::vector<std::pair<double, double>> &expected = {});
+    adapt_mesh(const SurfaceRegions<dim> &expected = {});
     // Where the contact edges are expected at speed `next`: the sweep of
     // each edge from its extent at the present speed to its extrapolation
     // in log V_hat from the last two speeds (none before two are known).
     // Refined ahead of the solve, this region spares the re-solves on
-    // adapted meshes that an edge moving out of its fine cells costs.
-    std::vector<std::pair<double, double>>
+    // adapted meshes that an edge moving out of its fine cells costs. In
+    // 3D none yet: the mesh follows the edges after each solve.
+    SurfaceRegions<dim>
     expected_edges(double next) const;
     // Records the extent of the contact edges at the converged present
     // speed.
@@ -248,17 +257,18 @@ namespace viscoslide
     void
     update_quantities();
 
-    const Parameters::AllParameters         &prm;
-    const Scales                            &scales;
-    const ViscoelasticSolid                 &material;
-    SurfaceCoupling                         &coupling;
-    const SurfacePostprocessor              &postprocessor;
-    parallel::distributed::Triangulation<2> &triangulation;
-    TimerOutput                             &timer;
-    MPI_Comm                                 mpi_communicator;
-    ConditionalOStream                       pcout;
+    const Parameters::AllParameters           &prm;
+    const Scales                              &scales;
+    const ViscoelasticSolid                   &material;
+    SurfaceCoupling<dim>                      &coupling;
+    const SurfacePostprocessor<dim>           &postprocessor;
+    parallel::distributed::Triangulation<dim> &triangulation;
+    TimerOutput                               &timer;
+    MPI_Comm                                   mpi_communicator;
+    ConditionalOStream                         pcout;
 
-    // Components: u_x, u_y, then eps_v xx, yy, xy of each Maxwell arm.
+    // Components: the displacement, then the viscous strain of each
+    // Maxwell arm (viscous_strain.h).
     const unsigned int    n_strain_components;
     const FESystem<dim>   fe;
     DoFHandler<dim>       dof_handler;

@@ -11,6 +11,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <string>
 #include <vector>
 
 namespace viscoslide
@@ -20,27 +21,57 @@ namespace viscoslide
     using namespace dealii;
 
     // FESystem components: displacement, then the viscous strain of each
-    // Maxwell arm (xx, yy, xy of arm k at 2 + 3 k ... 4 + 3 k).
-    constexpr unsigned int first_component    = 2;
-    constexpr unsigned int components_per_arm = 3;
+    // Maxwell arm, components_per_arm of them (2D: xx, yy, xy of arm k at
+    // 2 + 3 k ... 4 + 3 k; 3D: xx, yy, zz, xy, xz, yz, SymmetricTensor's
+    // unrolled order in both).
+    template <int dim>
+    constexpr unsigned int first_component = dim;
+    template <int dim>
+    constexpr unsigned int components_per_arm = dim *(dim + 1) / 2;
 
-    // Strain component c (xx, yy, xy) of a symmetric tensor.
+    // Strain component c of a symmetric tensor.
+    template <int dim>
     inline double
-    component(const SymmetricTensor<2, 2> &t, const unsigned int c)
+    component(const SymmetricTensor<2, dim> &t, const unsigned int c)
     {
-      return c == 0 ? t[0][0] : (c == 1 ? t[1][1] : t[0][1]);
+      return t[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)];
     }
 
-    // The tensor whose component c is 1 (xy: the symmetric pair).
-    SymmetricTensor<2, 2>
-    unit(unsigned int c);
-
-    SymmetricTensor<2, 2>
-    tensor(double xx, double yy, double xy);
+    // The tensor whose component c is 1 (off the diagonal: the symmetric
+    // pair).
+    template <int dim>
+    SymmetricTensor<2, dim>
+    unit(unsigned int c)
+    {
+      SymmetricTensor<2, dim> t;
+      t[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] = 1.;
+      return t;
+    }
 
     // Viscous strain of one arm from the values of all components.
-    SymmetricTensor<2, 2>
-    of_arm(const Vector<double> &values, unsigned int arm);
+    template <int dim>
+    SymmetricTensor<2, dim>
+    of_arm(const Vector<double> &values, const unsigned int arm)
+    {
+      SymmetricTensor<2, dim> t;
+      const unsigned int      first =
+        first_component<dim> + components_per_arm<dim> * arm;
+      for (unsigned int c = 0; c < components_per_arm<dim>; ++c)
+        t[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
+          values[first + c];
+      return t;
+    }
+
+    // The names of the components, for output.
+    template <int dim>
+    std::vector<std::string>
+    component_names()
+    {
+      if constexpr (dim == 2)
+        return {"xx", "yy", "xy"};
+      else
+        return {"xx", "yy", "zz", "xy", "xz", "yz"};
+    }
 
     // The L2 projection onto the viscous-strain space of a cell, acting on
     // values at the quadrature points: (Pi f)(q) = sum_q' P(q, q') f(q'),
@@ -48,8 +79,9 @@ namespace viscoslide
     // Pi eps(u), the part of the strain that eps_v can represent: then
     // eps_v = Pi eps(u) is exactly the relaxed state, and a degree below 2
     // (which cannot hold the strain of Q2) adds no spurious arm stress.
+    template <int dim>
     FullMatrix<double>
-    projection(const FEValues<2>               &fe_values,
+    projection(const FEValues<dim>             &fe_values,
                const std::vector<unsigned int> &basis);
 
     template <typename T>

@@ -169,12 +169,7 @@ namespace viscoslide
                                const double      delta,
                                const double      s) const
   {
-    return gap(profile,
-               scales.eps,
-               delta,
-               0.,
-               apex_distance(p, s, prm.geometry.elongation),
-               u);
+    return gap(profile, scales.eps, delta, s, p, u, prm.geometry.elongation);
   }
 
 

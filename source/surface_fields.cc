@@ -35,13 +35,13 @@ namespace viscoslide
       {
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
           {
-            const double g =
-              gap(indenter,
-                  scales.eps,
-                  delta,
-                  0.,
-                  apex_distance(inputs.evaluation_points[q], s, elongation),
-                  inputs.solution_values[q][vertical<dim>]);
+            const double g = gap(indenter,
+                                 scales.eps,
+                                 delta,
+                                 s,
+                                 inputs.evaluation_points[q],
+                                 inputs.solution_values[q][vertical<dim>],
+                                 elongation);
             computed[q](0) = -law.traction(g) / scales.sigma_max;
             computed[q](1) = g / scales.eps;
           }

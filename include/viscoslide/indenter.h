@@ -101,6 +101,21 @@ namespace viscoslide
   {
     return eps + indenter.profile(x - s) - delta - u_y;
   }
+  // The same gap at a surface point p displaced vertically by u: in 3D
+  // the indenter as its body of revolution, stretched across the track by
+  // `elongation` (apex_distance()).
+  template <int dim>
+  inline double
+  gap(const Indenter           &indenter,
+      const double              eps,
+      const double              delta,
+      const double              s,
+      const dealii::Point<dim> &p,
+      const double              u,
+      const double              elongation)
+  {
+    return gap(indenter, eps, delta, 0., apex_distance(p, s, elongation), u);
+  }
 } // namespace viscoslide
 
 #endif

@@ -94,7 +94,7 @@ namespace viscoslide
     double
     gap_at(const Point<dim> &p, double u, double delta, double s) const
     {
-      return gap(indenter, eps, delta, 0., apex_distance(p, s, elongation), u);
+      return gap(indenter, eps, delta, s, p, u, elongation);
     }
     // dh/dx at p: the profile's slope along the track.
     double

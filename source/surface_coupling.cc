@@ -599,8 +599,12 @@ namespace viscoslide
     // where their terms change (ReusedFactorization).
     if constexpr (dim == 3)
       {
-        std::vector<double> local;
-        for (const auto &[dof, g] : gaps)
+        // each unknown once: a node shared by several faces was seen on
+        // each of them
+        const std::map<types::global_dof_index, double> unique(gaps.begin(),
+                                                               gaps.end());
+        std::vector<double>                             local;
+        for (const auto &[dof, g] : unique)
           if (g < limit)
             local.push_back(g);
         std::vector<double> all = gather_concatenated(comm, local, -1);

@@ -309,6 +309,8 @@ namespace viscoslide
   void
   SteadyStateSolver<dim>::record_edges()
   {
+    if (dim != 2) // expected_edges() extrapolates in 2D alone
+      return;
     const auto edges  = coupling.contact_edges(dof_handler, solution, delta, s);
     double     lowest = edges[0].lower[0], highest = edges[0].upper[0];
     for (const auto &edge : edges)

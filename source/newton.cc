@@ -252,12 +252,12 @@ namespace viscoslide
                         "'direct': MUMPS, one factorization per bulk operator, "
                         "through which every Newton system is solved exactly "
                         "(doc/model.md, Linear solver). "
-                        "'iterative': GMRES with algebraic multigrid (ML). "
-                        "'automatic': direct up to Direct solver limit "
-                        "unknowns, iterative above. For the approach and the "
-                        "transient solver; the steady-state solver always "
-                        "uses the direct one (doc/benchmark.md, An iterative "
-                        "solver for the steady state).");
+                        "'iterative': GMRES with algebraic multigrid (ML); "
+                        "in the steady-state solver with the viscous strain "
+                        "swept in the flow direction (doc/steady_state.md, "
+                        "The iterative linear solver). 'automatic': direct "
+                        "up to Direct solver limit unknowns, iterative "
+                        "above; the 2D steady state always direct.");
       prm.declare_entry("Direct solver limit",
                         "500000",
                         Patterns::Integer(1),

@@ -165,7 +165,10 @@ namespace viscoslide
                          with_matrix ? "steady: assemble"
                                      : "steady: assemble residual");
     if (with_matrix)
-      linear_solver.load_bulk(bulk_matrix, system_matrix, V_hat);
+      {
+        linear_solver.load_bulk(bulk_matrix, system_matrix, V_hat);
+        iterative_solver.matrix_changed(V_hat);
+      }
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     x = solution;
     bulk_matrix.vmult(system_rhs, x);

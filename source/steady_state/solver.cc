@@ -61,6 +61,7 @@ namespace viscoslide
     , quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
     , flux_quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
     , linear_solver(timer, mpi_communicator)
+    , iterative_solver(timer, mpi_communicator)
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == first_component<dim>)
@@ -141,6 +142,8 @@ namespace viscoslide
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     newton_update.reinit(system_rhs);
     coupling.reinit(locally_owned_dofs);
+    if (!use_direct_solver())
+      iterative_solver.reinit(dof_handler);
   }
 
 
@@ -245,13 +248,37 @@ namespace viscoslide
 
 
   template <int dim>
+  bool
+  SteadyStateSolver<dim>::use_direct_solver() const
+  {
+    using Parameters::LinearSolver;
+    const auto &solver = prm.solver;
+    return solver.linear_solver == LinearSolver::direct ||
+           (solver.linear_solver == LinearSolver::automatic &&
+            (dim == 2 || dof_handler.n_dofs() <= solver.direct_solver_limit));
+  }
+
+
+  template <int dim>
   void
   SteadyStateSolver<dim>::solve_newton_system()
   {
-    coupling.solve_bordered(linear_solver,
-                            system_matrix,
-                            system_rhs,
-                            newton_update);
+    if (use_direct_solver())
+      coupling.solve_bordered(linear_solver,
+                              system_matrix,
+                              system_rhs,
+                              newton_update);
+    else
+      coupling.solve_bordered(
+        [this](const auto &b, auto &x) {
+          const unsigned int before = iterative_solver.iterations;
+          iterative_solver.solve(system_matrix, b, x);
+          if (prm.solver.verbose)
+            pcout << "        GMRES: " << iterative_solver.iterations - before
+                  << " iterations" << std::endl;
+        },
+        system_rhs,
+        newton_update);
     constraints.distribute(newton_update);
   }
 
@@ -423,9 +450,14 @@ namespace viscoslide
                       last_quantities.normal_force)
           << "  " << contact_column(dim) << " " << std::setw(11)
           << last_quantities.contact_length / scales.contact << "  Newton "
-          << its << "  dofs " << dof_handler.n_dofs() << "  factorizations "
-          << linear_solver.factorizations << "  surface solves "
-          << linear_solver.surface_solves << std::endl;
+          << its << "  dofs " << dof_handler.n_dofs();
+    if (use_direct_solver())
+      pcout << "  factorizations " << linear_solver.factorizations
+            << "  surface solves " << linear_solver.surface_solves << std::endl;
+    else
+      pcout << "  GMRES solves " << iterative_solver.solves << "  iterations "
+            << iterative_solver.iterations << "  preconditioners "
+            << iterative_solver.setups << std::endl;
     return its;
   }
 

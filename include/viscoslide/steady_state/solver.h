@@ -44,6 +44,7 @@
 #include <viscoslide/parameters.h>
 #include <viscoslide/postprocessing.h>
 #include <viscoslide/steady_sliding.h>
+#include <viscoslide/steady_state/iterative_solver.h>
 #include <viscoslide/steady_state_table.h>
 #include <viscoslide/surface_coupling.h>
 
@@ -228,6 +229,11 @@ namespace viscoslide
                bool                         &upwind_is_mine,
                FullMatrix<double>           &matrix) const;
     // [solver.cc]
+    // Whether the Newton systems go to the direct solver: Solver/Linear
+    // solver, where 'automatic' takes it in 2D (MUMPS's fill grows like
+    // n log n there) and in 3D up to Direct solver limit unknowns.
+    bool
+    use_direct_solver() const;
     void
     solve_newton_system();
     typename SurfaceCoupling<dim>::System
@@ -287,6 +293,7 @@ namespace viscoslide
     TrilinosWrappers::MPI::Vector  solution; // ghosted
     TrilinosWrappers::MPI::Vector  system_rhs, newton_update;
     ReusedFactorization            linear_solver;
+    SteadyIterativeSolver<dim>     iterative_solver;
 
     double V_hat = 0.;
     double delta = 0.;

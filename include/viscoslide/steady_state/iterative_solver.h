@@ -1,0 +1,141 @@
+// The steady state's Newton systems solved by a Krylov method, for meshes
+// beyond the sparse direct solver (a 3D block): GMRES on the whole system
+//   J = [A B]   displacement rows
+//       [C D]   viscous-strain rows
+// right-preconditioned by the block triangular
+//   P = [A~ B]
+//       [0  D],
+// in which
+// * D, the strain's upwind advection and reaction, is inverted exactly by
+//   a sweep over the cells in the flow direction (step-63): a cell's rows
+//   couple only to the cells upstream of it, so in that order D is block
+//   lower triangular; across processes the sweep is block Jacobi (the
+//   inflow from another process's cells is left out);
+// * A~ = A - sum_K B_K D_K^-1 C_K, D_K the block of D in cell K, is the
+//   displacement block with each cell's strain eliminated without its
+//   inflow (exact in the relaxed and the instantaneous limits), surface
+//   terms included, approximated by one V-cycle of smoothed-aggregation
+//   AMG (Trilinos ML) with the rigid-body modes as near null space.
+// The spectrum of J P^-1 is 1 and that of S A~^-1, S = A - B D^-1 C the
+// solid's true displacement operator. What A~ leaves out is the strain's
+// memory over V tau downstream, and the iterations grow where V tau is a
+// cell or more (doc/steady_state.md, "The iterative linear solver").
+// doc/steady_state.md ("The linear solver") has the design and its
+// measured iteration counts.
+#ifndef viscoslide_steady_state_iterative_solver_h
+#define viscoslide_steady_state_iterative_solver_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <vector>
+
+class Epetra_CrsMatrix;
+class Epetra_Map;
+namespace ML_Epetra
+{
+  class MultiLevelPreconditioner;
+}
+
+namespace viscoslide
+{
+  using namespace dealii;
+
+  template <int dim>
+  class SteadyIterativeSolver
+  {
+  public:
+    SteadyIterativeSolver(TimerOutput &timer, MPI_Comm comm);
+    ~SteadyIterativeSolver();
+
+    // After every setup: which unknowns are displacements (components 0 to
+    // dim - 1 of the element) and which strain cells they belong to, and
+    // the rigid-body modes at the displacements' support points.
+    void
+    reinit(const DoFHandler<dim> &dof_handler);
+
+    // The system matrix was assembled anew; `bulk` names its bulk operator
+    // (the speed), on which A~'s strain part depends alone.
+    void
+    matrix_changed(double bulk);
+
+    // x = J^-1 b to a relative 1e-10 of |b|, x's start ignored. A solve
+    // that does not converge leaves GMRES's last iterate: Newton's method
+    // judges it by the residual.
+    void
+    solve(const TrilinosWrappers::SparseMatrix &matrix,
+          const TrilinosWrappers::MPI::Vector  &b,
+          TrilinosWrappers::MPI::Vector        &x);
+
+    // Counters for the log and the benchmarks.
+    unsigned int solves = 0, iterations = 0, setups = 0;
+
+    // The preconditioner: x = P^-1 r (GMRES's interface).
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &x,
+          const TrilinosWrappers::MPI::Vector &r) const;
+
+  private:
+    // D's rows of one strain component in one cell: their positions among
+    // the owned unknowns, the inverse of their diagonal block, and their
+    // couplings to the owned cells upstream.
+    struct StrainBlock
+    {
+      std::vector<unsigned int> rows;
+      FullMatrix<double>        inverse;
+      std::vector<unsigned int> upstream_row, upstream_column;
+      std::vector<double>       upstream_value;
+    };
+
+    void
+    setup(const TrilinosWrappers::SparseMatrix &matrix);
+    void
+    setup_strain_blocks(const TrilinosWrappers::SparseMatrix &matrix);
+    void
+    setup_displacement_block(const TrilinosWrappers::SparseMatrix &matrix);
+    // z_e = D^-1 r_e on the owned strain rows (positions among the owned
+    // unknowns), by the sweep.
+    void
+    sweep(const TrilinosWrappers::MPI::Vector &r,
+          TrilinosWrappers::MPI::Vector       &z) const;
+
+    TimerOutput &timer;
+    MPI_Comm     comm;
+
+    IndexSet owned;
+    // The owned displacement unknowns, node by node (the dim components of
+    // a support point together, as ML's PDE equations ask), and their
+    // positions among the owned unknowns.
+    std::vector<types::global_dof_index> displacement;
+    std::vector<unsigned int>            displacement_position;
+    // Whether a locally relevant unknown is a displacement.
+    IndexSet relevant_displacement;
+    // The strain blocks in sweep order (upstream first).
+    std::vector<StrainBlock> blocks;
+    // The near null space, mode by mode over `displacement`.
+    std::vector<double> rigid_body_modes;
+    unsigned int        n_modes = 0;
+
+    // sum_K B_K D_K^-1 C_K for the bulk `strain_bulk` (-1: none).
+    std::unique_ptr<Epetra_CrsMatrix>                    relaxation;
+    double                                               strain_bulk    = -1.;
+    double                                               assembled_bulk = 0.;
+    bool                                                 set_up         = false;
+    std::unique_ptr<Epetra_Map>                          map;
+    std::unique_ptr<Epetra_CrsMatrix>                    block;
+    std::unique_ptr<ML_Epetra::MultiLevelPreconditioner> amg;
+    // The matrix of the present solve, and vmult()'s work vectors.
+    const TrilinosWrappers::SparseMatrix *system = nullptr;
+    mutable TrilinosWrappers::MPI::Vector strain_part, coupled;
+  };
+} // namespace viscoslide
+
+#endif

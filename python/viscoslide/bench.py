@@ -180,7 +180,9 @@ def steady_curve(argv):
     steady-state solver, approach included: the wall time, the solver's
     timer sections and, given a reference steady_state.csv, the largest
     relative change of each column against it. The environment may set
-    GRADING (Mesh/Mesh grading) and SPEEDS (Sliding/Sliding speed)."""
+    GRADING (Mesh/Mesh grading), SPEEDS (Sliding/Sliding speed) and
+    LINEAR_SOLVER (Solver/Linear solver: with 'iterative' the last
+    station's line counts GMRES's solves and iterations)."""
     prepare()
     load, muT, cell, np, reference, keep = (argv + ['0.134', '6.08', '1', '1', '', ''][len(argv):])[:6]
     work = tempfile.mkdtemp()
@@ -190,6 +192,8 @@ def steady_curve(argv):
         changes['Mesh/Mesh grading'] = os.environ['GRADING']
     if os.environ.get('SPEEDS'):
         changes['Sliding/Sliding speed'] = os.environ['SPEEDS']
+    if os.environ.get('LINEAR_SOLVER'):
+        changes['Solver/Linear solver'] = os.environ['LINEAR_SOLVER']
     path = prm.override_file('parameter_files/fig09b_friction_force_control.prm',
                              os.path.join(work, 'run.prm'), changes)
     log = os.path.join(work, 'log')

@@ -282,6 +282,7 @@ namespace viscoslide
           j, false, eliminated, false, *relaxation);
       }
 
+    amg.reset(); // before the matrix it was built on
     const Epetra_CrsMatrix &a       = matrix.trilinos_matrix();
     const Epetra_CrsMatrix &r       = *relaxation;
     unsigned int            longest = 0;
@@ -343,7 +344,6 @@ namespace viscoslide
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
     list.set("null space: vectors", rigid_body_modes.data());
-    amg.reset();
     amg =
       std::make_unique<ML_Epetra::MultiLevelPreconditioner>(*block, list, true);
   }

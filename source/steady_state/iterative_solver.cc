@@ -248,8 +248,8 @@ namespace viscoslide
   }
 
 
-  // A~ = A - B diag(D)^-1 C on the owned displacement rows, node by node,
-  // and ML's hierarchy on it.
+  // A~ = A - sum_K B_K D_K^-1 C_K on the owned displacement rows, node by
+  // node, and ML's hierarchy on it.
   template <int dim>
   void
   SteadyIterativeSolver<dim>::setup_displacement_block(

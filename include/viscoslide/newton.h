@@ -39,6 +39,16 @@ namespace viscoslide
       unsigned int max_relaxation_steps;
       bool         verbose;
 
+      // Whether a Newton system of n unknowns goes to the direct solver:
+      // 'direct', or 'automatic' up to direct_solver_limit.
+      bool
+      direct_for(const std::size_t n) const
+      {
+        return linear_solver == LinearSolver::direct ||
+               (linear_solver == LinearSolver::automatic &&
+                n <= direct_solver_limit);
+      }
+
       static void
       declare(ParameterHandler &prm);
       void

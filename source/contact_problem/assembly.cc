@@ -232,10 +232,7 @@ namespace viscoslide
   bool
   ContactProblem::use_direct_solver() const
   {
-    using Parameters::LinearSolver;
-    return prm.solver.linear_solver == LinearSolver::direct ||
-           (prm.solver.linear_solver == LinearSolver::automatic &&
-            dof_handler.n_dofs() <= prm.solver.direct_solver_limit);
+    return prm.solver.direct_for(dof_handler.n_dofs());
   }
 
 

@@ -252,10 +252,8 @@ namespace viscoslide
   SteadyStateSolver<dim>::use_direct_solver() const
   {
     using Parameters::LinearSolver;
-    const auto &solver = prm.solver;
-    return solver.linear_solver == LinearSolver::direct ||
-           (solver.linear_solver == LinearSolver::automatic &&
-            (dim == 2 || dof_handler.n_dofs() <= solver.direct_solver_limit));
+    return prm.solver.direct_for(dof_handler.n_dofs()) ||
+           (dim == 2 && prm.solver.linear_solver == LinearSolver::automatic);
   }
 
 

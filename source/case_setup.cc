@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 
@@ -43,17 +44,24 @@ namespace viscoslide
                  : std::sqrt(4. * F * s.R / (M_PI * E_star));
       }
 
-      // Whether every case runs the boundary elements: the solver, and
-      // every one a sweep lists.
+      // Whether every case runs one of `solvers`: the solver, and every one
+      // a sweep lists.
+      bool
+      runs_only(const AllParameters                       &p,
+                const std::initializer_list<SlidingSolver> solvers)
+      {
+        const auto listed = [&](const SlidingSolver s) {
+          return std::find(solvers.begin(), solvers.end(), s) != solvers.end();
+        };
+        return listed(p.sliding.solver) && std::all_of(p.sweep.solvers.begin(),
+                                                       p.sweep.solvers.end(),
+                                                       listed);
+      }
+
       bool
       boundary_elements_only(const AllParameters &p)
       {
-        return p.sliding.solver == SlidingSolver::boundary_element &&
-               std::all_of(p.sweep.solvers.begin(),
-                           p.sweep.solvers.end(),
-                           [](const SlidingSolver s) {
-                             return s == SlidingSolver::boundary_element;
-                           });
+        return runs_only(p, {SlidingSolver::boundary_element});
       }
 
       // Whether every case runs on the boundary elements' graded grid,
@@ -237,6 +245,13 @@ namespace viscoslide
     void
     warn_about_accuracy(AllParameters &p)
     {
+      if (p.geometry.dimension == 3 && !boundary_elements_only(p))
+        p.notes.push_back(
+          "Warning: the 3D finite elements are verified on coarse meshes "
+          "only (doc/steady_state.md, In three dimensions): at rest against "
+          "Hertz and the boundary elements, sliding within several percent "
+          "of the boundary elements; refine 'Mesh/Finest surface cell' to "
+          "see whether the case is converged");
       // The cohesive zone of a crack under the law's peak stress: about
       // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.
       const Scales s(p);
@@ -484,10 +499,20 @@ namespace viscoslide
               "'Sweep/Solvers' with 'transient' needs a single 'Sliding/"
               "Sliding speed' (the transient solver runs each listed speed "
               "as a case of its own; the steady solvers follow the list)");
-      require(p.geometry.dimension == 2 || boundary_elements_only(p),
+      require(p.geometry.dimension == 2 ||
+                runs_only(p,
+                          {SlidingSolver::boundary_element,
+                           SlidingSolver::steady_state}),
               "'Geometry/Dimension' = 3 needs 'Sliding/Solver' = "
-              "boundary-element (and no other in 'Sweep/Solvers'): the "
-              "finite elements are plane strain");
+              "boundary-element or steady-state (and no other in "
+              "'Sweep/Solvers'): the transient solver is plane strain");
+      require(p.geometry.dimension == 2 || boundary_elements_only(p) ||
+                !p.adhesion.adhesive(),
+              "'Geometry/Dimension' = 3 with 'Sliding/Solver' = steady-state "
+              "needs a law without attraction ('Adhesion/Interaction law' = "
+              "repulsive): the 3D finite elements cannot yet bring an "
+              "adhesive sphere into contact from rest; use 'Sliding/Solver' "
+              "= boundary-element");
       if (p.sliding.solver == SlidingSolver::boundary_element)
         {
           require(p.sliding.control != Control::spring,

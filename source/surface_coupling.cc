@@ -595,30 +595,33 @@ namespace viscoslide
                             2. * Utilities::MPI::min(smallest, comm));
     // A 3D contact's window holds a disc of the surface: thousands of
     // unknowns. The dense stage is kept at whole_window of them, those of
-    // the smallest gaps; the rest is exact but for a new factorization
-    // where their terms change (ReusedFactorization).
+    // the smallest gaps, ties ordered by index (a predicted step holds a
+    // whole disc at one gap); the rest is exact but for a new
+    // factorization where their terms change (ReusedFactorization).
+    using Key = std::pair<double, double>; // gap, index
+    Key bound{limit, -1.};
     if constexpr (dim == 3)
       {
         // each unknown once: a node shared by several faces was seen on
         // each of them
         const std::map<types::global_dof_index, double> unique(gaps.begin(),
                                                                gaps.end());
-        std::vector<double>                             local;
+        std::vector<Key>                                local;
         for (const auto &[dof, g] : unique)
           if (g < limit)
-            local.push_back(g);
-        std::vector<double> all = gather_concatenated(comm, local, -1);
+            local.emplace_back(g, static_cast<double>(dof));
+        std::vector<Key> all = gather_concatenated(comm, local, -1);
         if (all.size() > whole_window)
           {
             std::nth_element(all.begin(),
                              all.begin() + whole_window,
                              all.end());
-            limit = all[whole_window];
+            bound = all[whole_window];
           }
       }
     IndexSet window(dof_handler.n_dofs());
     for (const auto &[dof, g] : gaps)
-      if (g < limit)
+      if (Key(g, static_cast<double>(dof)) < bound)
         window.add_index(dof);
     window.compress();
     return window;
@@ -676,14 +679,19 @@ namespace viscoslide
     const double                     delta,
     const double                     s) const
   {
-    const double eps = scales.eps;
+    // Lennard-Jones-like laws pull up to the gap eps, where the traction
+    // vanishes; a repulsive wall pushes at every gap, so there no node
+    // starts closer than it was.
+    const double free_gap = prm.adhesion.adhesive()
+                              ? scales.eps
+                              : std::numeric_limits<double>::infinity();
     // Each node once (it lies on two faces); every process adds, so that
     // all of them compress alike.
     std::map<types::global_dof_index, double> u_y_change;
     for_each_surface_unknown(
       dof_handler, constraints, [&](const auto dof, const Point<dim> &p) {
         const double floor =
-          std::min(eps, gap_at(p, last[dof], last_delta, last_s));
+          std::min(free_gap, gap_at(p, last[dof], last_delta, last_s));
         const double g = gap_at(p, predicted[dof], delta, s);
         if (g < floor)
           u_y_change[dof] = g - floor; // opens the gap to floor

@@ -141,6 +141,7 @@ namespace viscoslide
                     mpi_communicator);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     newton_update.reinit(system_rhs);
+    last_increment.clear(); // adapt_mesh() transfers it
     coupling.reinit(locally_owned_dofs);
     if (!use_direct_solver())
       iterative_solver.reinit(dof_handler);
@@ -317,15 +318,32 @@ namespace viscoslide
           triangulation, dof_handler, solution, delta, s, expected))
       return false;
 
+    // The last step's increment travels with the solution: the next load
+    // step's predictor extrapolates it.
+    const bool with_increment = last_increment.size() == solution.size();
+    std::vector<const TrilinosWrappers::MPI::Vector *> from{&solution};
+    if (with_increment)
+      from.push_back(&last_increment);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       transfer(dof_handler);
-    transfer.prepare_for_coarsening_and_refinement(solution);
+    transfer.prepare_for_coarsening_and_refinement(from);
     triangulation.execute_coarsening_and_refinement();
     setup_system();
-    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
-    transfer.interpolate(x);
-    constraints.distribute(x);
-    solution = x;
+    std::vector<TrilinosWrappers::MPI::Vector> to(
+      from.size(),
+      TrilinosWrappers::MPI::Vector(locally_owned_dofs, mpi_communicator));
+    std::vector<TrilinosWrappers::MPI::Vector *> to_pointers;
+    for (auto &x : to)
+      to_pointers.push_back(&x);
+    transfer.interpolate(to_pointers);
+    for (auto &x : to)
+      constraints.distribute(x);
+    solution = to[0];
+    if (with_increment)
+      {
+        last_increment.reinit(solution);
+        last_increment = to[1];
+      }
     return true;
   }
 
@@ -410,15 +428,15 @@ namespace viscoslide
   // if it failed on an adapted mesh, where that state no longer fits.
   template <int dim>
   int
-  SteadyStateSolver<dim>::solve_step(const std::string &what)
+  SteadyStateSolver<dim>::solve_step(const std::string                   &what,
+                                     const TrilinosWrappers::MPI::Vector &last,
+                                     const double last_delta)
   {
-    const TrilinosWrappers::MPI::Vector backup(solution);
-    const double                        delta0 = delta;
     int its = coupling.newton(newton_system(), pcout);
     if (its < 0)
       {
-        solution = backup;
-        delta    = delta0;
+        solution = last;
+        delta    = last_delta;
         {
           TimerOutput::Scope t(timer, "steady: relaxation");
           its = coupling.relax(newton_system(), pcout);
@@ -427,6 +445,16 @@ namespace viscoslide
           return -1;
         pcout << "  steady " << what << ": reached by relaxation" << std::endl;
       }
+    {
+      TrilinosWrappers::MPI::Vector increment(locally_owned_dofs,
+                                              mpi_communicator),
+        start(locally_owned_dofs, mpi_communicator);
+      increment = solution;
+      start     = last;
+      increment.add(-1., start);
+      last_increment.reinit(solution);
+      last_increment = increment;
+    }
     const int more = resolve_on_adapted_meshes(
       prm.mesh.max_adaptation_cycles,
       [this] { return adapt_mesh(); },
@@ -485,7 +513,7 @@ namespace viscoslide
         const TrilinosWrappers::MPI::Vector backup(solution);
         const double                        delta0 = delta, V0 = V_hat;
         V_hat         = next;
-        const int its = solve_step(label("V_hat", next));
+        const int its = solve_step(label("V_hat", next), backup, delta0);
         if (its == -2)
           return false;
         if (its < 0)
@@ -506,6 +534,7 @@ namespace viscoslide
             continue;
           }
         record_edges();
+        last_load_step = {};
         on_converged();
         step = std::min(largest_step, 2. * step);
       }
@@ -515,8 +544,11 @@ namespace viscoslide
 
   // Continuation in the controlled quantity at the current speed: F_n under
   // force control, delta under displacement control. Steps are linear (the
-  // load may change sign): the whole way first, halved on failure down to
-  // a thousandth of it, doubled again after each success.
+  // load may change sign): the whole way first, or four times the last
+  // load step's change of the controlled quantity (the approach's, when
+  // force control takes over from it) where the predictor extrapolates
+  // that step; halved on failure down to a thousandth of the way, doubled
+  // again after each success.
   template <int dim>
   bool
   SteadyStateSolver<dim>::continue_to_load(
@@ -528,18 +560,26 @@ namespace viscoslide
     double      &controlled = force ? coupling.held_force() : delta;
     const double unit       = force ? scales.force : scales.eps;
     const double start = controlled, whole = std::abs(target - start);
-    double       step = whole;
+    // of the controlled quantity over the last converged load step
+    double last_step = force ? last_load_step.force : last_load_step.delta;
+    double step =
+      last_step != 0. ? std::min(whole, 4. * std::abs(last_step)) : whole;
     while (controlled != target)
       {
         const double                        next = target > controlled
                                                      ? std::min(target, controlled + step)
                                                      : std::max(target, controlled - step);
         const TrilinosWrappers::MPI::Vector backup(solution);
-        const double delta0 = delta, force0 = coupling.held_force();
-        controlled = next;
+        const double delta0 = delta, force0 = coupling.held_force(),
+                     load0     = last_quantities.normal_force;
+        const double this_step = next - controlled;
+        controlled             = next;
+        predict_load_step(last_step != 0. ? this_step / last_step : 0.,
+                          backup,
+                          delta0);
         const std::string what =
           label(force ? "F_hat" : "delta_hat", next / unit);
-        const int its = solve_step(what);
+        const int its = solve_step(what, backup, force ? delta0 : next);
         if (its == -2)
           return false;
         if (its < 0)
@@ -558,9 +598,42 @@ namespace viscoslide
             continue;
           }
         on_converged();
-        step = std::min(whole, 2. * step);
+        last_step      = this_step;
+        last_load_step = {delta - delta0, last_quantities.normal_force - load0};
+        step           = std::min(whole, 2. * step);
       }
     return true;
+  }
+
+
+  // The secant through the last converged step, scaled by `ratio` (none if
+  // 0), with the surface held out of the indenter's repulsive wall: a step
+  // that starts inside the wall costs Newton one iteration per factor of
+  // about 2.6 in the residual (measured on the 3D approach), as Newton on
+  // a power law of the gap does.
+  template <int dim>
+  void
+  SteadyStateSolver<dim>::predict_load_step(
+    const double                         ratio,
+    const TrilinosWrappers::MPI::Vector &last,
+    const double                         last_delta)
+  {
+    TrilinosWrappers::MPI::Vector predicted(locally_owned_dofs,
+                                            mpi_communicator);
+    predicted = solution;
+    if (ratio != 0. && std::abs(ratio) <= 4. &&
+        last_increment.size() == solution.size())
+      {
+        TrilinosWrappers::MPI::Vector increment(locally_owned_dofs,
+                                                mpi_communicator);
+        increment = last_increment;
+        predicted.add(ratio, increment);
+        if (coupling.force_control())
+          delta += ratio * last_load_step.delta;
+      }
+    coupling.limit_predicted_closing(
+      dof_handler, constraints, last, last_delta, s, predicted, delta, s);
+    solution = predicted;
   }
 
 

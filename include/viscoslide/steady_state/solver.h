@@ -242,8 +242,21 @@ namespace viscoslide
     // V_hat and load; the iterations used or -1.
     int
     solve_newton_or_relax();
+    // One step of a continuation from the converged state `last`: Newton
+    // from the present solution, else the relaxation from `last` at
+    // approach `last_delta` (the step's own under displacement control),
+    // then the mesh adaptation cycles; the iterations, -1 if the step
+    // failed, -2 if it failed on an adapted mesh.
     int
-    solve_step(const std::string &what);
+    solve_step(const std::string                   &what,
+               const TrilinosWrappers::MPI::Vector &last,
+               double                               last_delta);
+    // The start of a load step from the converged state `last`: the last
+    // step's increment times `ratio`, the surface kept out of the wall.
+    void
+    predict_load_step(double                               ratio,
+                      const TrilinosWrappers::MPI::Vector &last,
+                      double                               last_delta);
     // Adapts the mesh to the contact edges of the solution and to the
     // intervals `expected` (see expected_edges()); whether it changed.
     bool
@@ -315,6 +328,15 @@ namespace viscoslide
       }
     };
     std::vector<EdgeSpan> edge_spans;
+
+    // The change of the solution (ghosted) over the last converged step,
+    // before its mesh adaptation, carried through them; and of delta and
+    // F_n over it if it was a load step (zero after a speed step).
+    TrilinosWrappers::MPI::Vector last_increment;
+    struct
+    {
+      double delta = 0., force = 0.;
+    } last_load_step;
 
     SurfaceQuantities last_quantities{};
     unsigned int      last_newton_iterations = 0;

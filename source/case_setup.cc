@@ -506,13 +506,6 @@ namespace viscoslide
               "'Geometry/Dimension' = 3 needs 'Sliding/Solver' = "
               "boundary-element or steady-state (and no other in "
               "'Sweep/Solvers'): the transient solver is plane strain");
-      require(p.geometry.dimension == 2 || boundary_elements_only(p) ||
-                !p.adhesion.adhesive(),
-              "'Geometry/Dimension' = 3 with 'Sliding/Solver' = steady-state "
-              "needs a law without attraction ('Adhesion/Interaction law' = "
-              "repulsive): the 3D finite elements cannot yet bring an "
-              "adhesive sphere into contact from rest; use 'Sliding/Solver' "
-              "= boundary-element");
       if (p.sliding.solver == SlidingSolver::boundary_element)
         {
           require(p.sliding.control != Control::spring,

@@ -85,4 +85,36 @@ namespace viscoslide
     return Registry<InteractionLawType>::get(name, "Adhesion/Interaction law")
       .create(dgamma, eps);
   }
+
+
+  AttractionHomotopy::AttractionHomotopy(const std::string &name,
+                                         const double       dgamma,
+                                         const double       eps)
+    : wall(create_interaction_law("repulsive", dgamma, eps))
+    , law(create_interaction_law(name, dgamma, eps))
+  {
+  }
+
+
+  void
+  AttractionHomotopy::set_attraction(const double attraction)
+  {
+    s = attraction;
+  }
+
+
+  double
+  AttractionHomotopy::traction(const double gap) const
+  {
+    const double p = wall->traction(gap);
+    return p + s * (law->traction(gap) - p);
+  }
+
+
+  double
+  AttractionHomotopy::derivative(const double gap) const
+  {
+    const double d = wall->derivative(gap);
+    return d + s * (law->derivative(gap) - d);
+  }
 } // namespace viscoslide

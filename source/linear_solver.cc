@@ -617,6 +617,73 @@ namespace viscoslide
   }
 
 
+  // Whether the part of b outside T holds more than 1e-3 of its l1 norm:
+  // left out, it leaves Newton's method under force control converging
+  // linearly (measured: a factor of 0.7 per iteration on a 3D adhesive
+  // sphere, stalling).
+  bool
+  ReusedFactorization::border_outside_window(const Vector &b) const
+  {
+    double outside = 0., all = 0.;
+    for (const auto i : surface)
+      {
+        all += std::abs(b[i]);
+        if (position(i) < 0)
+          outside += std::abs(b[i]);
+      }
+    return Utilities::MPI::sum(outside, comm) >
+           1e-3 * Utilities::MPI::sum(all, comm);
+  }
+
+
+  // The bordered system by superposition on the window's linear system
+  // (without the window's model, which is not linear): K z = r, K w = b,
+  // t = (m - b.z) / (d - b.w), x = z - t w.
+  double
+  ReusedFactorization::solve_by_superposition(const SurfaceTerms &terms,
+                                              const Vector       &b,
+                                              const double        d,
+                                              const Vector       &r,
+                                              const double        m,
+                                              Vector             &x)
+  {
+    TimerOutput::Scope       t(timer, "linear: surface solve");
+    const unsigned int       k = window_list.size();
+    LAPACKFullMatrix<double> K;
+    int                      singular = 0;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          K = window_matrix(terms, false, 0.);
+          K.compute_lu_factorization();
+        }
+      catch (const std::exception &)
+        {
+          singular = 1;
+        }
+    AssertThrow(Utilities::MPI::max(singular, comm) == 0,
+                ExcMessage("The Newton matrix is singular on the surface"));
+    const auto solve = [&](const Vector &v, Vector &z) {
+      const std::vector<double> reduced = direct.reduce(v);
+      std::vector<double>       x_T(k);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          dealii::Vector<double> y(reduced.begin(), reduced.end());
+          K.solve(y);
+          std::copy(y.begin(), y.end(), x_T.begin());
+        }
+      direct.expand(x_T, z);
+    };
+    Vector w(b);
+    solve(r, x);
+    solve(b, w);
+    surface_solves += 2;
+    const double t_value = (m - b * x) / (d - b * w);
+    x.add(-t_value, w);
+    return t_value;
+  }
+
+
   // The exact solution through the factorization of A: on the host the
   // dense system on T,
   //   [S + D   b_T] [x_T]   [r_T - A_TI A_II^-1 r_I]
@@ -638,6 +705,8 @@ namespace viscoslide
         factorize(matrix);
         terms = gather_surface_terms(matrix, b);
       }
+    if (b && border_outside_window(*b))
+      return solve_by_superposition(terms, *b, d, r, m, x);
     const WindowModel model =
       build_model ? build_model(window_list) : WindowModel();
     const double              start_norm = std::hypot(r.l2_norm(), b ? m : 0.);

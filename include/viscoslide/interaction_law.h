@@ -71,6 +71,33 @@ namespace viscoslide
   // range eps.
   std::unique_ptr<InteractionLaw>
   create_interaction_law(const std::string &name, double dgamma, double eps);
+
+
+  // A law whose attraction is switched on by a factor s in [0, 1]:
+  // (1 - s) wall + s law, with the wall the law registered as "repulsive"
+  // at the same dgamma and eps. An undeformed block cannot be brought into
+  // adhesive contact by Newton's method (the surface has to jump); on the
+  // wall (s = 0) there is no jump, and from that contact the adhesive one
+  // follows continuously as s grows (at a fixed approach the contact only
+  // widens).
+  class AttractionHomotopy : public InteractionLaw
+  {
+  public:
+    AttractionHomotopy(const std::string &name, double dgamma, double eps);
+
+    void
+    set_attraction(double s);
+
+    double
+    traction(double gap) const override;
+
+    double
+    derivative(double gap) const override;
+
+  private:
+    const std::unique_ptr<InteractionLaw> wall, law;
+    double                                s = 1.;
+  };
 } // namespace viscoslide
 
 #endif

@@ -190,8 +190,10 @@ namespace viscoslide
     // The bordered system of force control,
     //   [K   b] [x]   [r]
     //   [b^T d] [t] = [m],
-    // for K = matrix and b zero outside the surface unknowns (its part
-    // outside T is left out, like the changes of K there); returns t.
+    // for K = matrix and b zero outside the surface unknowns; returns t.
+    // Where b reaches outside T (an attractive law's tail beyond a capped
+    // 3D window) by two solves of the linear window system instead of
+    // one: t from K z = r and K w = b, x = z - t w.
     double
     solve_bordered(const TrilinosWrappers::SparseMatrix &matrix,
                    const TrilinosWrappers::MPI::Vector  &b,
@@ -240,6 +242,15 @@ namespace viscoslide
     SurfaceTerms
     gather_surface_terms(const TrilinosWrappers::SparseMatrix &matrix,
                          const TrilinosWrappers::MPI::Vector  *b);
+    bool
+    border_outside_window(const TrilinosWrappers::MPI::Vector &b) const;
+    double
+    solve_by_superposition(const SurfaceTerms                  &terms,
+                           const TrilinosWrappers::MPI::Vector &b,
+                           double                               d,
+                           const TrilinosWrappers::MPI::Vector &r,
+                           double                               m,
+                           TrilinosWrappers::MPI::Vector       &x);
     double
     solve_condensed(const TrilinosWrappers::SparseMatrix &matrix,
                     const TrilinosWrappers::MPI::Vector  *b,

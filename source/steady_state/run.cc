@@ -105,12 +105,11 @@ namespace viscoslide
     }
 
 
-    // In 3D (refused by CaseSetup until the 3D finite elements are
-    // verified against the boundary elements, doc/steady_state.md) the
-    // steady-state solver approaches at rest (V_hat = 0, the relaxed solid)
-    // itself: under displacement control from Loading/Initial approach to
-    // Final approach, then, under force control with a Target load, in the
-    // force to it.
+    // In 3D the steady-state solver approaches at rest (V_hat = 0, the
+    // relaxed solid) itself: under displacement control from
+    // Loading/Initial approach to Final approach (an adhesive law on its
+    // repulsive wall alone, then with its attraction switched on there),
+    // then, under force control with a Target load, in the force to it.
     void
     run_3d(CaseParts &parts, const bool resume)
     {
@@ -123,8 +122,20 @@ namespace viscoslide
                         TimerOutput::wall_times);
       parallel::distributed::Triangulation<3> triangulation(
         parts.comm, Triangulation<3>::limit_level_difference_at_vertices);
+      // An adhesive law comes in with its attraction off (see
+      // AttractionHomotopy) unless the state is read from a checkpoint.
+      std::unique_ptr<AttractionHomotopy> homotopy;
+      const InteractionLaw               *law = parts.law.get();
+      if (prm.adhesion.adhesive())
+        {
+          homotopy = std::make_unique<AttractionHomotopy>(prm.adhesion.law,
+                                                          scales.dgamma,
+                                                          scales.eps);
+          homotopy->set_attraction(resume ? 1. : 0.);
+          law = homotopy.get();
+        }
       const SurfacePostprocessor<3> postprocessor(
-        *parts.law,
+        *law,
         *parts.indenter,
         scales.eps,
         prm.adhesion.contact_gap,
@@ -132,7 +143,7 @@ namespace viscoslide
         top_boundary<3>,
         prm.geometry.elongation);
       SurfaceCoupling<3> coupling(
-        prm, scales, *parts.law, *parts.indenter, postprocessor, parts.comm);
+        prm, scales, *law, *parts.indenter, postprocessor, parts.comm);
       SteadyStateSolver<3> steady(prm,
                                   scales,
                                   parts.material,
@@ -166,6 +177,14 @@ namespace viscoslide
                   "approach' = " +
                   std::to_string(last));
             }
+          if (homotopy && !steady.continue_in_attraction([&](const double s) {
+                homotopy->set_attraction(s);
+              }))
+            throw std::runtime_error(
+              "the adhesive contact at rest did not follow the law's "
+              "attraction at 'Loading/Final approach' = " +
+              std::to_string(last) +
+              " (a larger approach gives a wider contact to start from)");
           hold_present_force(prm,
                              scales,
                              coupling,

@@ -430,9 +430,12 @@ namespace viscoslide
   int
   SteadyStateSolver<dim>::solve_step(const std::string                   &what,
                                      const TrilinosWrappers::MPI::Vector &last,
-                                     const double last_delta)
+                                     const double last_delta,
+                                     const bool   relax)
   {
     int its = coupling.newton(newton_system(), pcout);
+    if (its < 0 && !relax)
+      return -1;
     if (its < 0)
       {
         solution = last;
@@ -579,7 +582,12 @@ namespace viscoslide
                           delta0);
         const std::string what =
           label(force ? "F_hat" : "delta_hat", next / unit);
-        const int its = solve_step(what, backup, force ? delta0 : next);
+        // In 3D a relaxation costs several Newton solves per pseudo-step:
+        // shorter steps first.
+        const int its = solve_step(what,
+                                   backup,
+                                   force ? delta0 : next,
+                                   dim == 2 || step < 0.1 * whole);
         if (its == -2)
           return false;
         if (its < 0)
@@ -602,6 +610,56 @@ namespace viscoslide
         last_load_step = {delta - delta0, last_quantities.normal_force - load0};
         step           = std::min(whole, 2. * step);
       }
+    return true;
+  }
+
+
+  // Steps in the attraction s: a quarter of the way first (the contact
+  // widens severalfold), halved on failure
+  // (the relaxation only once they are short) down to a thousandth,
+  // doubled again after each success; each from the secant of the last.
+  template <int dim>
+  bool
+  SteadyStateSolver<dim>::continue_in_attraction(
+    const std::function<void(double)> &set_attraction)
+  {
+    double attraction = 0., step = 0.25, last_step = 0.;
+    // The load step's size carries over to the load continuation after
+    // this one, its increment does not.
+    const auto load_step = last_load_step;
+    while (attraction < 1.)
+      {
+        const double next = std::min(1., attraction + step);
+        const TrilinosWrappers::MPI::Vector backup(solution);
+        set_attraction(next);
+        predict_load_step(last_step != 0. ? (next - attraction) / last_step
+                                          : 0.,
+                          backup,
+                          delta);
+        const int its =
+          solve_step(label("attraction", next), backup, delta, step < 0.1);
+        if (its == -2)
+          return false;
+        if (its < 0)
+          {
+            solution = backup;
+            set_attraction(attraction);
+            step *= 0.5;
+            if (step < 1e-3)
+              {
+                pcout << "Steady state: Newton failed at attraction " << next
+                      << " even in steps of a thousandth; last converged "
+                      << attraction << std::endl;
+                return false;
+              }
+            continue;
+          }
+        last_step  = next - attraction;
+        attraction = next;
+        step       = std::min(1., 2. * step);
+      }
+    last_load_step = load_step;
+    last_increment.clear();
     return true;
   }
 

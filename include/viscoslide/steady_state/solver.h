@@ -106,6 +106,13 @@ namespace viscoslide
     continue_to_load(double                       target,
                      const std::function<void()> &on_converged) override;
 
+    // Follows the steady state at the current speed and approach as the
+    // law's attraction grows from 0 to 1 (AttractionHomotopy, through
+    // `set_attraction`), by continuation in steps; false if a step cannot
+    // be solved. [solver.cc]
+    bool
+    continue_in_attraction(const std::function<void(double)> &set_attraction);
+
     double
     speed() const override
     {
@@ -245,12 +252,15 @@ namespace viscoslide
     // One step of a continuation from the converged state `last`: Newton
     // from the present solution, else the relaxation from `last` at
     // approach `last_delta` (the step's own under displacement control),
-    // then the mesh adaptation cycles; the iterations, -1 if the step
-    // failed, -2 if it failed on an adapted mesh.
+    // then the mesh adaptation cycles (without `relax`, a Newton failure
+    // fails the step: a shorter one is cheaper than the relaxation); the
+    // iterations, -1 if the step failed, -2 if it failed on an adapted
+    // mesh.
     int
     solve_step(const std::string                   &what,
                const TrilinosWrappers::MPI::Vector &last,
-               double                               last_delta);
+               double                               last_delta,
+               bool                                 relax = true);
     // The start of a load step from the converged state `last`: the last
     // step's increment times `ratio`, the surface kept out of the wall.
     void

@@ -247,11 +247,18 @@ namespace viscoslide
     {
       if (p.geometry.dimension == 3 && !boundary_elements_only(p))
         p.notes.push_back(
-          "Warning: the 3D finite elements are verified on coarse meshes "
-          "only (doc/steady_state.md, In three dimensions): at rest against "
-          "Hertz and the boundary elements, sliding within several percent "
-          "of the boundary elements; refine 'Mesh/Finest surface cell' to "
-          "see whether the case is converged");
+          std::string(
+            "Warning: the 3D finite elements are verified on coarse meshes "
+            "only (doc/steady_state.md, In three dimensions): at rest "
+            "against Hertz and the boundary elements, ") +
+          (p.adhesion.adhesive()
+             ? "but sliding with adhesion 26 to 33 % below the boundary "
+               "elements' friction on 4-eps cells (the adhesive zone is not "
+               "resolved); use 'Sliding/Solver' = boundary-element for its "
+               "friction"
+             : "sliding within several percent of the boundary elements") +
+          "; refine 'Mesh/Finest surface cell' to see whether the case is "
+          "converged");
       // The cohesive zone of a crack under the law's peak stress: about
       // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.
       const Scales s(p);

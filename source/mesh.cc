@@ -205,8 +205,8 @@ namespace viscoslide
         "block or layer. 3: the indenter the body of revolution h(r) of "
         "its shape (a sphere for 'circle', a paraboloid for 'parabola') on "
         "a half-space or a layer, by Sliding/Solver = boundary-element, or "
-        "on a block by steady-state for a law without attraction "
-        "(doc/steady_state.md); forces in 1.5 pi dgamma R, contact areas in "
+        "on a block by steady-state (doc/steady_state.md); forces in 1.5 pi "
+        "dgamma R, contact areas in "
         "pi R eps (doc/conventions.md).");
       prm.declare_entry("Substrate",
                         "half-plane",

@@ -627,6 +627,9 @@ namespace viscoslide
     // The load step's size carries over to the load continuation after
     // this one, its increment does not.
     const auto load_step = last_load_step;
+    pcout << "Switching the law's attraction on at delta_hat = "
+          << delta / scales.eps << " (the approach came in on its wall)"
+          << std::endl;
     while (attraction < 1.)
       {
         const double next = std::min(1., attraction + step);

@@ -657,6 +657,7 @@ namespace viscoslide
               }
             continue;
           }
+        pcout << "  the line above: attraction " << next << std::endl;
         last_step  = next - attraction;
         attraction = next;
         step       = std::min(1., 2. * step);

@@ -615,9 +615,9 @@ namespace viscoslide
 
 
   // Steps in the attraction s: a quarter of the way first (the contact
-  // widens severalfold), halved on failure
-  // (the relaxation only once they are short) down to a thousandth,
-  // doubled again after each success; each from the secant of the last.
+  // widens severalfold), halved on failure (the relaxation only once they
+  // are short) down to a thousandth, doubled again after each success;
+  // each from the secant of the last.
   template <int dim>
   bool
   SteadyStateSolver<dim>::continue_in_attraction(

@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <initializer_list>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -115,6 +117,118 @@ namespace viscoslide
             "Sliding increment of about V tau / Finest surface cell "
             "resolves it");
       }
+
+      // The memory of the machines this run has, in GB: this machine's times
+      // the nodes the processes are spread over, read from the environment
+      // of Open MPI's mpirun or of Slurm (so that no collective call is
+      // needed here); one node where neither says.
+      double
+      machine_memory_gb()
+      {
+        const double one = double(sysconf(_SC_PHYS_PAGES)) *
+                           double(sysconf(_SC_PAGE_SIZE)) / 1e9;
+        const auto number = [](const char *name) {
+          const char *value = std::getenv(name);
+          return value == nullptr ? 0 : std::atoi(value);
+        };
+        const int size  = number("OMPI_COMM_WORLD_SIZE"),
+                  local = number("OMPI_COMM_WORLD_LOCAL_SIZE");
+        if (size > 0 && local > 0)
+          return one * std::ceil(double(size) / local);
+        return one * std::max(1, number("SLURM_JOB_NUM_NODES"));
+      }
+
+      // Peak memory per unknown of the 3D finite elements, in GB, summed over
+      // two processes, measured on the sphere of tests/sphere_fem_hertz.prm
+      // (scripts/bench_fem3d, doc/benchmark.md). The direct solver's
+      // factors grow faster than the unknowns (as n^(4/3) for nested
+      // dissection in 3D): 24.2, 24.5 and 38.2 kB per unknown at 128 004,
+      // 266 304 and 501 390 unknowns, the fit through the first and the
+      // last. The iterative solver's matrices, multigrid hierarchy and
+      // Krylov vectors: 17.8 kB per unknown at 266 304.
+      double
+      direct_gb_per_unknown(const double unknowns)
+      {
+        return 22.3e-6 * std::cbrt(unknowns / 1e5);
+      }
+      constexpr double iterative_gb_per_unknown = 18e-6;
+
+      // The size of the 3D finite elements with the mesh about the largest
+      // contact of the case, the relaxed one at the Target load (JKR's with
+      // an adhesive law, Hertz's without; under displacement control Hertz's
+      // at the Final approach): its cells counted before anything is built,
+      // the unknowns per cell of the elements, and the memory per unknown
+      // measured for each linear solver (scripts/bench_fem3d,
+      // doc/benchmark.md).
+      struct FiniteElements3dSize
+      {
+        double radius, cells, unknowns, gigabytes, available;
+        bool   direct;
+        bool   counted_all; // false: the count stopped, there are more
+      };
+
+      FiniteElements3dSize
+      finite_elements_3d_size(const AllParameters &p)
+      {
+        const Scales         s(p);
+        const double         E = std::min(1., 1. / p.material.E0_over_Einf);
+        FiniteElements3dSize size;
+        double              &a = size.radius;
+        if (p.loading.has_target_load())
+          {
+            const double F = std::max(p.loading.target_load, 0.) * s.force,
+                         J = p.adhesion.adhesive() ? 3 * M_PI * s.dgamma * s.R
+                                                   : 0.;
+            a              = std::cbrt(3 * s.R / (4 * E) *
+                          (F + J + std::sqrt(2 * J * F + J * J)));
+          }
+        else
+          a = std::sqrt(s.R * std::max(p.loading.final_approach, 0.) * s.eps);
+        // The edge band reaches to the gap Edge gap upper (the rigid
+        // profile's gap, which the surface's sinking only widens).
+        const double outer =
+          std::sqrt(a * a + 2 * s.R * p.mesh.edge_gap_high * s.eps);
+        size.available = machine_memory_gb();
+        // Per cell: the Q2 displacement (8 nodes' 3 components on a large
+        // mesh) and 6 viscous-strain components per arm of degree k.
+        const double k = p.sliding.viscous_strain_degree,
+                     per_cell =
+                       24 + 6. * make_solid(p, s).n_arms() * std::pow(k + 1, 3);
+        // No need to count beyond what would not fit with either solver.
+        const double most_cells =
+          2 * size.available / iterative_gb_per_unknown / per_cell;
+        size.cells       = estimated_cells_about_ring(p, a, outer, most_cells);
+        size.counted_all = size.cells <= most_cells;
+        size.unknowns    = size.cells * per_cell;
+        size.direct      = p.solver.direct_for(size.unknowns);
+        size.gigabytes =
+          size.unknowns * (size.direct ? direct_gb_per_unknown(size.unknowns)
+                                       : iterative_gb_per_unknown);
+        return size;
+      }
+
+      // Refused before anything is written, with the entries to change.
+      void
+      check_finite_elements_3d_fit(const AllParameters &p)
+      {
+        const FiniteElements3dSize size = finite_elements_3d_size(p);
+        std::ostringstream         message;
+        message << std::setprecision(3)
+                << "the 3D finite elements about the relaxed contact of this "
+                << "case (radius about " << size.radius << " eps) need "
+                << (size.counted_all ? "about " : "more than ") << size.unknowns
+                << " unknowns (" << size.cells << " cells) and, with the "
+                << (size.direct ? "direct" : "iterative") << " linear solver, "
+                << (size.counted_all ? "about " : "over ") << size.gigabytes
+                << " GB; the machines of this run have " << size.available
+                << " GB: raise 'Mesh/Finest surface cell' or 'Mesh/Mesh "
+                   "grading'"
+                << (size.direct ? ", or set 'Solver/Linear solver' = iterative"
+                                : "")
+                << " (doc/steady_state.md, Memory)";
+        require(size.gigabytes <= 0.8 * size.available, message.str());
+      }
+
     } // namespace
 
 
@@ -245,6 +359,20 @@ namespace viscoslide
     void
     warn_about_accuracy(AllParameters &p)
     {
+      if (p.geometry.dimension == 3 && !boundary_elements_only(p))
+        {
+          const FiniteElements3dSize size = finite_elements_3d_size(p);
+          std::ostringstream         note;
+          note << std::setprecision(3)
+               << "Note: the 3D finite elements about the relaxed contact "
+               << "will have about " << size.unknowns << " unknowns and need "
+               << "about " << size.gigabytes << " GB with the "
+               << (size.direct ? "direct" : "iterative")
+               << " linear solver, of " << size.available
+               << " GB (an estimate before the mesh is built: "
+               << "doc/steady_state.md, Memory)";
+          p.notes.push_back(note.str());
+        }
       if (p.geometry.dimension == 3 && !boundary_elements_only(p))
         p.notes.push_back(
           std::string(
@@ -454,6 +582,7 @@ namespace viscoslide
     }
 
 
+
     void
     check_consistency(const AllParameters &p)
     {
@@ -513,6 +642,8 @@ namespace viscoslide
               "'Geometry/Dimension' = 3 needs 'Sliding/Solver' = "
               "boundary-element or steady-state (and no other in "
               "'Sweep/Solvers'): the transient solver is plane strain");
+      if (p.geometry.dimension == 3 && !boundary_elements_only(p))
+        check_finite_elements_3d_fit(p);
       if (p.sliding.solver == SlidingSolver::boundary_element)
         {
           require(p.sliding.control != Control::spring,

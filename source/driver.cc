@@ -64,6 +64,13 @@ namespace viscoslide
             run_steady_state(parts, resume);
           else // the transient solver, and an approach without sliding
             ContactProblem(parts).run(resume);
+          const PeakMemory memory = peak_memory(comm);
+          if (log &&
+              c.parameters.output.verbosity != Parameters::Verbosity::quiet)
+            std::cout << "Peak memory: " << memory.total << " GB in "
+                      << Utilities::MPI::n_mpi_processes(comm)
+                      << " processes (largest " << memory.largest << " GB)"
+                      << std::endl;
           return "";
         }
       catch (ExceptionBase &e)

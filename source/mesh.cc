@@ -74,6 +74,50 @@ namespace viscoslide
         }
       return std::hypot(along, depth);
     }
+
+    // The side of the block's coarse cells along x (make_block).
+    template <int dim>
+    double
+    coarse_cell_width(const Parameters::AllParameters &prm)
+    {
+      const double W = prm.geometry.domain_width, H = prm.geometry.height();
+      const double side =
+        dim == 2 ? std::min(W, H) : std::min({W, prm.geometry.length(), H});
+      return W / n_coarse_cells(W, side, side);
+    }
+
+    // The refinement level a cell at distance d from the contact edges
+    // needs: the finest surface cell at the edges, growing as Mesh grading
+    // x d away from them, in halvings of the coarse cells.
+    class LevelRule
+    {
+    public:
+      LevelRule(const Parameters::AllParameters &prm, const double coarse)
+        : coarse(coarse)
+        , finest(prm.mesh.finest_cell)
+        , grading(prm.mesh.grading)
+        , max_level(level_of(finest))
+      {
+      }
+
+      int
+      operator()(const double d) const
+      {
+        return std::clamp(level_of(std::max(finest, grading * d)),
+                          0,
+                          max_level);
+      }
+
+    private:
+      int
+      level_of(const double h) const
+      {
+        return static_cast<int>(std::ceil(std::log2(coarse / h) - 1e-9));
+      }
+
+      double coarse, finest, grading;
+      int    max_level;
+    };
   } // namespace
 
 
@@ -84,10 +128,7 @@ namespace viscoslide
     const SurfaceRegions<dim>                 &edges,
     const Parameters::AllParameters           &prm)
   {
-    const double W = prm.geometry.domain_width, H = prm.geometry.height();
-    const double side =
-      dim == 2 ? std::min(W, H) : std::min({W, prm.geometry.length(), H});
-    const double        coarse_width = W / n_coarse_cells(W, side, side);
+    const double        W = prm.geometry.domain_width;
     SurfaceRegions<dim> whole_surface(1);
     whole_surface[0].lower[0] = -W / 2;
     whole_surface[0].upper[0] = W / 2;
@@ -96,16 +137,7 @@ namespace viscoslide
         whole_surface[0].lower[1] = -prm.geometry.length() / 2;
         whole_surface[0].upper[1] = prm.geometry.length() / 2;
       }
-    const int max_level = static_cast<int>(
-      std::ceil(std::log2(coarse_width / prm.mesh.finest_cell) - 1e-9));
-    // The refinement level a cell at distance d from the edges needs.
-    const auto level_at = [&](const double d) {
-      const double h = std::max(prm.mesh.finest_cell, prm.mesh.grading * d);
-      return std::clamp(static_cast<int>(
-                          std::ceil(std::log2(coarse_width / h) - 1e-9)),
-                        0,
-                        max_level);
-    };
+    const LevelRule level_at(prm, coarse_cell_width<dim>(prm));
 
     bool must_change = false;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -150,6 +182,73 @@ namespace viscoslide
         changes = true;
     return Utilities::MPI::max(changes ? 1 : 0,
                                triangulation.get_communicator()) != 0;
+  }
+
+
+  double
+  estimated_cells_about_ring(const Parameters::AllParameters &prm,
+                             const double                     r_inner,
+                             const double                     r_outer,
+                             const double                     limit)
+  {
+    const double W = prm.geometry.domain_width, L = prm.geometry.length(),
+                 H = prm.geometry.height(), side = std::min({W, L, H});
+    const LevelRule level_at(prm, coarse_cell_width<3>(prm));
+    // The ring widened by the margin, as flag_cells_near_edges widens each
+    // edge; with a uniform surface the whole top is the edge.
+    const double inner = prm.mesh.uniform_surface
+                           ? 0.
+                           : std::max(0., r_inner - prm.mesh.edge_margin),
+                 outer = prm.mesh.uniform_surface
+                           ? std::hypot(W, L)
+                           : r_outer + prm.mesh.edge_margin;
+    double     count   = 0;
+    const auto refine  = [&](const auto     &self,
+                            const Point<3> &lo,
+                            const Point<3> &hi,
+                            const int       level) -> void {
+      if (count > limit)
+        return;
+      // the box's nearest and farthest distance from the axis, and depth
+      const double near_x = std::max({0., lo[0], -hi[0]}),
+                   near_y = std::max({0., lo[1], -hi[1]});
+      const double far = std::hypot(std::max(std::abs(lo[0]), std::abs(hi[0])),
+                                    std::max(std::abs(lo[1]), std::abs(hi[1])));
+      const double along =
+        std::max({0., inner - far, std::hypot(near_x, near_y) - outer});
+      if (level >= level_at(std::hypot(along, std::max(0., -hi[2]))))
+        {
+          count += 1;
+          return;
+        }
+      const Point<3> mid = 0.5 * (lo + hi);
+      for (unsigned int child = 0; child < 8; ++child)
+        {
+          Point<3> a, b;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const bool upper = (child >> d) & 1;
+              a[d]             = upper ? mid[d] : lo[d];
+              b[d]             = upper ? hi[d] : mid[d];
+            }
+          self(self, a, b, level + 1);
+        }
+    };
+    const unsigned int n[3] = {
+      static_cast<unsigned int>(n_coarse_cells(W, side, side)),
+      2 * static_cast<unsigned int>(n_coarse_cells(L / 2, side, side)),
+      static_cast<unsigned int>(n_coarse_cells(H, side, side))};
+    const Point<3> origin(-W / 2, -L / 2, -H);
+    const double   size[3] = {W / n[0], L / n[1], H / n[2]};
+    for (unsigned int i = 0; i < n[0]; ++i)
+      for (unsigned int j = 0; j < n[1]; ++j)
+        for (unsigned int k = 0; k < n[2]; ++k)
+          {
+            const Point<3> lo =
+              origin + Point<3>(i * size[0], j * size[1], k * size[2]);
+            refine(refine, lo, lo + Point<3>(size[0], size[1], size[2]), 0);
+          }
+    return count;
   }
 
 

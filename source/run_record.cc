@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <viscoslide/output.h>
 #include <viscoslide/run_record.h>
@@ -91,23 +92,35 @@ namespace viscoslide
   } // namespace
 
 
+  PeakMemory
+  peak_memory(MPI_Comm comm)
+  {
+    Utilities::System::MemoryStats stats;
+    Utilities::System::get_memory_stats(stats); // in kB; 0 where unknown
+    const double gb = 1024. * stats.VmHWM / 1e9;
+    return {Utilities::MPI::sum(gb, comm), Utilities::MPI::max(gb, comm)};
+  }
+
+
   RunRecord::RunRecord(const std::string &directory,
                        const std::string &command_line,
                        MPI_Comm           comm)
-    : directory(directory)
+    : comm(comm)
+    , directory(directory)
     , command_line(command_line)
     , start(utc_now())
     , n_processes(Utilities::MPI::n_mpi_processes(comm))
     , root(Utilities::MPI::this_mpi_process(comm) == 0)
     , clock_start(std::chrono::steady_clock::now())
   {
-    write("running", "null", "null", "null");
+    write("running", "null", "null", "null", "null");
   }
 
 
   void
   RunRecord::finish(const std::string &status) const
   {
+    const PeakMemory memory = peak_memory(comm);
     if (!root)
       return;
     const double wall = std::chrono::duration<double>(
@@ -121,7 +134,9 @@ namespace viscoslide
           json_string(utc_now()),
           CsvTable::format(wall),
           "{\"n_dofs_last\": " + dofs + ", \"n_cells_after_approach\": " +
-            last_value(dir / "approach.csv", "n_cells") + "}");
+            last_value(dir / "approach.csv", "n_cells") + "}",
+          "{\"total\": " + CsvTable::format(memory.total) +
+            ", \"largest_process\": " + CsvTable::format(memory.largest) + "}");
   }
 
 
@@ -129,7 +144,8 @@ namespace viscoslide
   RunRecord::write(const std::string &status,
                    const std::string &end,
                    const std::string &wall,
-                   const std::string &mesh) const
+                   const std::string &mesh,
+                   const std::string &memory) const
   {
     if (!root)
       return;
@@ -146,7 +162,8 @@ namespace viscoslide
          << ",\n  \"version\": " << json_string(version_string()) << ",\n  "
          << source << ",\n  \"working_directory\": "
          << json_string(std::filesystem::current_path().string())
-         << ",\n  \"mesh\": " << mesh << "\n}\n";
+         << ",\n  \"mesh\": " << mesh << ",\n  \"peak_memory_gb\": " << memory
+         << "\n}\n";
     try
       {
         write_atomically(

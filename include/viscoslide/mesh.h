@@ -146,6 +146,17 @@ namespace viscoslide
     const SurfaceRegions<dim>                 &edges,
     const Parameters::AllParameters           &prm);
 
+  // The cells flag_cells_near_edges makes about a ring of the 3D block's
+  // top surface (r_inner <= sqrt(x^2 + y^2) <= r_outer), counted without
+  // building the mesh: an estimate (neighbouring cells are not balanced to
+  // one level apart, as the mesh is) for refusing a case that will not fit
+  // before it starts. Stops counting above `limit`.
+  double
+  estimated_cells_about_ring(const Parameters::AllParameters &prm,
+                             double                           r_inner,
+                             double                           r_outer,
+                             double                           limit);
+
   // After a converged solve: adapts the mesh to the new solution and
   // solves again, until the mesh stays or max_cycles times. Returns the
   // iterations of the re-solves, or -1 if one failed.

@@ -11,6 +11,15 @@
 
 namespace viscoslide
 {
+  // The peak resident memory (VmHWM) of the processes of `comm` so far, in
+  // GB: summed over them and the largest one's. Collective.
+  struct PeakMemory
+  {
+    double total, largest;
+  };
+  PeakMemory
+  peak_memory(MPI_Comm comm);
+
   class RunRecord
   {
   public:
@@ -21,18 +30,22 @@ namespace viscoslide
               MPI_Comm           comm);
 
     // Rewrites it with the end time, the wall time, the status ("done" or
-    // "failed") and the size of the last mesh read from the run's tables.
+    // "failed"), the size of the last mesh read from the run's tables and
+    // the peak memory. Collective.
     void
     finish(const std::string &status) const;
 
   private:
-    // end, wall and mesh are JSON values (null while the run goes on).
+    // end, wall, mesh and memory are JSON values (null while the run goes
+    // on).
     void
     write(const std::string &status,
           const std::string &end,
           const std::string &wall,
-          const std::string &mesh) const;
+          const std::string &mesh,
+          const std::string &memory) const;
 
+    MPI_Comm                              comm;
     std::string                           directory, command_line, start;
     unsigned int                          n_processes;
     bool                                  root;

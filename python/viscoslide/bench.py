@@ -12,11 +12,14 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
     scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
                                                steady_curve()
     scripts/bench_sphere [R_hat]               sphere_curve()
+    scripts/bench_fem3d [meshes] [solvers] [procs]
+                                               fem3d()
     scripts/bench_transient [jobs] [prm ...]   transient_agreement()
 
 Each runs in the checkout (paths are relative to it, as the scripts'
 `cd` made them), builds it first with scripts/setup if there is no
 build/viscoslide, and lets mpirun run as root."""
+import json
 import math
 import os
 import shutil
@@ -268,6 +271,52 @@ def sphere_curve(argv):
     print(f'output in {work}/out')
 
 
+def fem3d(argv):
+    """The 3D finite elements' cost against mesh size, linear solver and
+    process count: tests/sphere_fem_hertz.prm (R_hat 100, repulsive, F_hat
+    0.0075) at rest and at V_hat 1 on meshes given as "finest cell:grading"
+    (default "8:1 4:1 4:0.5"), per run the wall time, the unknowns, the
+    peak memory (summed over the processes, and per unknown), GMRES
+    iterations per solve, and mu and A_hat at V_hat 1.
+
+        scripts/bench_fem3d ["meshes"] ["solvers"] ["procs"]"""
+    prepare()
+    meshes = (argv[0] if argv else '8:1 4:1 4:0.5').split()
+    solvers = (argv[1] if len(argv) > 1 else 'direct iterative').split()
+    procs = (argv[2] if len(argv) > 2 else '2 1').split()
+    work = tempfile.mkdtemp()
+    print(f"{'mesh':<7} {'solver':<9} {'procs':>5} {'wall_s':>8} {'unknowns':>9} "
+          f"{'peak_GB':>8} {'kB/unknown':>10} {'its/solve':>9} {'mu':>9} {'A_hat':>7}", flush=True)
+    for mesh in meshes:
+        cell, grading = mesh.split(':')
+        for solver in solvers:
+            for np in procs:
+                out = f'{work}/{cell}_{grading}_{solver}_np{np}'
+                path = prm.override_file(
+                    'tests/sphere_fem_hertz.prm', out + '.prm',
+                    {'Output/Output directory': out, 'Mesh/Finest surface cell': cell,
+                     'Mesh/Mesh grading': grading, 'Solver/Linear solver': solver,
+                     'Sliding/Sliding speed': '1'})
+                code, wall = timed_run(mpirun(np, path), out + '.log')
+                table = rows(f'{out}/steady_state.csv', False)
+                if code or not table:
+                    print(f'{mesh:<7} {solver:<9} {np:>5} failed: see {out}.log', flush=True)
+                    continue
+                unknowns = max(int(r['n_dofs']) for r in rows(f'{out}/continuation.csv', False))
+                with open(f'{out}/run.json') as f:
+                    peak = json.load(f)['peak_memory_gb']['total']
+                its = '-'
+                for line in open(out + '.log'):
+                    if line.strip().startswith('GMRES solves'):
+                        w = line.split()
+                        its = f'{int(w[4]) / max(int(w[2]), 1):.0f}'
+                r = table[-1]
+                print(f"{mesh:<7} {solver:<9} {np:>5} {wall:8.1f} {unknowns:9d} {peak:8.2f} "
+                      f"{1e6 * peak / unknowns:10.2f} {its:>9} {r['mu']:9.5g} {r['A_hat']:7.4g}",
+                      flush=True)
+    print(f'outputs in {work}')
+
+
 # The transient's resolved cases (tests/cross_validation_*.prm): V_hat 0.1
 # to 1000 at R_hat 400, muT 6.08, each on the mesh, step and window that
 # resolve it, under displacement and force control; the longest first, so
@@ -328,7 +377,7 @@ def transient_agreement(argv):
 
 
 COMMANDS = {'approach': approach, 'sliding': sliding, 'curve': curve, 'steady_curve': steady_curve,
-            'sphere_curve': sphere_curve, 'transient_agreement': transient_agreement}
+            'sphere_curve': sphere_curve, 'fem3d': fem3d, 'transient_agreement': transient_agreement}
 
 
 def main(argv=None):

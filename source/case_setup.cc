@@ -372,21 +372,17 @@ namespace viscoslide
                << " GB (an estimate before the mesh is built: "
                << "doc/steady_state.md, Memory)";
           p.notes.push_back(note.str());
-        }
-      if (p.geometry.dimension == 3 && !boundary_elements_only(p))
-        p.notes.push_back(
-          std::string(
+          p.notes.push_back(
             "Warning: the 3D finite elements are verified on coarse meshes "
             "only (doc/steady_state.md, In three dimensions): at rest "
-            "against Hertz and the boundary elements, ") +
-          (p.adhesion.adhesive()
-             ? "but sliding with adhesion 26 to 33 % below the boundary "
-               "elements' friction on 4-eps cells (the adhesive zone is not "
-               "resolved); use 'Sliding/Solver' = boundary-element for its "
-               "friction"
-             : "sliding within several percent of the boundary elements") +
-          "; refine 'Mesh/Finest surface cell' to see whether the case is "
-          "converged");
+            "against Hertz and the boundary elements; sliding without "
+            "adhesion on 4-eps cells, their friction is 9 to 26 % below the "
+            "boundary elements' at V_hat 1 to 100 (the contact edges are "
+            "not resolved); with adhesion it is not yet measured. Use "
+            "'Sliding/Solver' = boundary-element for the friction, and "
+            "refine 'Mesh/Finest surface cell' to see whether a case is "
+            "converged");
+        }
       // The cohesive zone of a crack under the law's peak stress: about
       // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.
       const Scales s(p);
@@ -450,7 +446,8 @@ namespace viscoslide
               "than 'Mesh/Finest surface cell' = " +
               num(p.mesh.finest_cell) +
               " eps: the arms relax inside one cell and the dissipation at "
-              "the contact edges is not resolved; expect the friction to be "
+              "the contact edges is not resolved; expect the friction to "
+              "be "
               "off by up to tens of percent (the energy balance printed "
               "with each row says how far), or refine the finest cell to "
               "about V tau");
@@ -472,9 +469,11 @@ namespace viscoslide
         }
       if (p.sliding.solver == SlidingSolver::transient && p.sliding.speed > 0)
         p.notes.push_back(
-          "Note: 'Sliding/Solver' = transient slides the indenter until the "
+          "Note: 'Sliding/Solver' = transient slides the indenter until "
+          "the "
           "contact is steady, typically thousands of eps in steps of the "
-          "finest cell: minutes per speed at R_hat 400, 20 minutes to hours "
+          "finest cell: minutes per speed at R_hat 400, 20 minutes to "
+          "hours "
           "at R_hat 1e4 (doc/benchmark.md). For the steady friction alone, "
           "'Sliding/Solver' = steady-state solves it directly (about a "
           "minute for a curve of 21 speeds at muT 1, 2-eps cells)");

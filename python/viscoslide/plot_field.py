@@ -27,7 +27,13 @@ from --per-speed, or the .pvd time of a steady_KKKKK.pvtu, or row KK of
 steady_state.csv next to it); the caption the run's parameters from that
 steady_state.csv. PREFIX defaults to FILE without .pvtu + '_' + FIELD;
 PREFIX.png is printed. The fields are read by viscoslide.vtu (standard
-library only, also used by the tests)."""
+library only, also used by the tests).
+
+In 3D a steady_KKKKK.pvtu is drawn in the plane y = 0 (the track's centre
+line, a plane of the mesh's faces), depth z downwards, and a
+steady_surface_KKKKK.pvtu (FIELD p_hat or gap_over_eps) seen from above,
+about where FIELD exceeds 1e-3 of its largest magnitude (--width W: the
+square's side)."""
 import argparse
 import os
 import re
@@ -58,14 +64,15 @@ def run_row(pvtu):
     rows = [r for r in tables.read(path, text=True) if r.get('V_hat')]
     if not rows:
         return None
-    m = re.match(r'steady_(\d+)\.pvtu$', os.path.basename(pvtu))
+    m = re.match(r'steady_(?:surface_)?(\d+)\.pvtu$', os.path.basename(pvtu))
     return rows[int(m.group(1))] if m and int(m.group(1)) < len(rows) else rows[-1]
 
 
 def pvd_speed(pvtu):
-    """V_hat of a steady_KKKKK.pvtu: its time in steady.pvd."""
+    """V_hat of a steady_KKKKK.pvtu (or steady_surface_KKKKK.pvtu): its time
+    in steady.pvd (steady_surface.pvd)."""
     name = os.path.basename(pvtu)
-    path = os.path.join(os.path.dirname(pvtu) or '.', 'steady.pvd')
+    path = os.path.join(os.path.dirname(pvtu) or '.', name.rsplit('_', 1)[0] + '.pvd')
     if not name.startswith('steady_') or not os.path.exists(path):
         return None
     with open(path) as f:
@@ -88,7 +95,7 @@ def caption(row):
             parts.append(r'$\hat R = %s$' % fmt(num('R_hat')))
         t = row.get('t_hat', '')
         if row.get('substrate') == 'half-plane' or t in ('half-plane', 'inf'):
-            parts.append('half-plane')
+            parts.append('half-space' if 'A_hat' in row else 'half-plane')
         elif t:
             parts.append(r'$\hat t = %s$' % fmt(float(t)))
         control = row.get('control', '')
@@ -119,6 +126,46 @@ def contact_ends(pvtu, R):
     return (min(inside), max(inside)) if inside else None
 
 
+def from_above(plt, mtri, np, a, x, y, v, tris, row, prefix):
+    """A field of the 3D top surface (steady_surface_KKKKK.pvtu) seen from
+    above, about where it exceeds 1e-3 of its largest magnitude."""
+    hi = np.abs(v).max() or 1.
+    seen = np.abs(v) > 1e-3 * hi
+    half = 0.8 * max(np.abs(x[seen]).max(), np.abs(y[seen]).max()) + 1 if seen.any() else 10
+    half = a.width / 2 if a.width else 1.5 * half
+    signed = v.min() < -1e-3 * hi and v.max() > 1e-3 * hi
+    V = a.per_speed or pvd_speed(a.pvtu)
+    if V is None and row:
+        V = float(row['V_hat'])
+    title = NAMES.get(a.field, (a.field.replace('_', ' '),))[0]
+    if a.field == 'p_hat':
+        title = r'Surface pressure $\hat p$'
+    title += ' seen from above' + (r', $\hat V = %s$' % fmt(V) if V is not None else '')
+    fig, ax = plt.subplots(figsize=(5.4, 4.6), layout='constrained')
+    tri = mtri.Triangulation(x, y, tris)
+    from matplotlib.colors import Normalize
+    cmap, norm = ('RdBu_r', Normalize(-hi, hi)) if signed else ('magma', Normalize(0, hi))
+    pc = ax.tripcolor(tri, v, shading='gouraud', cmap=cmap, norm=norm, rasterized=True)
+    ax.tricontour(tri, v, levels=[hi * f for f in (0.2, 0.4, 0.6, 0.8)],
+                  colors='k' if signed else 'w', linewidths=0.4, alpha=0.8)
+    if signed:
+        ax.tricontour(tri, v, levels=[0.], colors='k', linewidths=0.8)
+    ax.set_xlim(-half, half)
+    ax.set_ylim(-half, half)
+    ax.set_aspect('equal')
+    ax.set_xlabel(r'$x/\varepsilon$ (sliding towards $+x$)')
+    ax.set_ylabel(r'$y/\varepsilon$')
+    label = {'p_hat': r'$\hat p$', 'gap_over_eps': r'gap/$\varepsilon$'}.get(a.field, a.field)
+    fig.colorbar(pc, ax=ax, label=label, shrink=0.9, aspect=15, pad=0.02)
+    ax.set_title(title, fontsize=11)
+    ax.text(0.01, 0.02, 'contours at 0.2 ... 0.8 of the peak' + ('; thick: 0' if signed else ''),
+            transform=ax.transAxes, fontsize=7, color='k' if signed else 'w')
+    cap = caption(row)
+    if cap:
+        fig.suptitle(cap, fontsize=9, color='0.15')
+    style.save(fig, prefix)
+
+
 def main():
     plt = style.pyplot(style.FIELDS, 'scripts/plot_field')
     import matplotlib.tri as mtri
@@ -140,9 +187,15 @@ def main():
     a = ap.parse_args()
     prefix = a.prefix or os.path.splitext(a.pvtu)[0] + '_' + a.field
 
-    x, y, v, tris = vtu.read_pvtu(a.pvtu, a.field)
+    shape = vtu.cell_shape(a.pvtu)
+    if shape == 'hexahedra':  # 3D: the plane y = 0 of the track's centre line
+        x, y, v, tris = vtu.read_pvtu_slice(a.pvtu, a.field)
+    else:
+        x, y, v, tris = vtu.read_pvtu(a.pvtu, a.field)
     x, y, v = np.array(x), np.array(y), np.array(v, dtype=float)
     row = run_row(a.pvtu)
+    if shape == 'quadrilaterals' and 'surface' in os.path.basename(a.pvtu):
+        return from_above(plt, mtri, np, a, x, y, v, tris, row, prefix)
     R = None
     try:
         R = float(row['R_hat']) if row else None
@@ -161,7 +214,7 @@ def main():
     at_top = top - y < 1e-6 * (1 + abs(top))
     surface = x[at_top & (np.abs(v) > 1e-3 * vmax)]
     extent = (surface.max() - surface.min()) if surface.size else (x.max() - x.min()) / 10
-    width = a.width or 4 * extent
+    width = a.width or min(4 * extent, x.max() - x.min())
     depth = a.depth or width / 4
     seen = (np.abs(x - center) <= width / 2) & (y >= top - depth)
     shown = v[seen] if seen.any() else v
@@ -217,7 +270,8 @@ def main():
         ax.set_xlim(center - width / 2, center + width / 2)
         ax.set_ylim(top - depth, top)
         ax.set_aspect('equal')
-        ax.set_ylabel(r'$y/\varepsilon$')
+        ax.set_ylabel(r'$z/\varepsilon$ (plane $y = 0$)' if shape == 'hexahedra'
+                      else r'$y/\varepsilon$')
         fig.colorbar(pc, ax=ax, label=label if len(label) < 40 else symbol, shrink=0.9,
                      aspect=15, pad=0.02)
         if scale == 'log':

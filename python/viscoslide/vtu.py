@@ -75,6 +75,62 @@ def read_pvtu(pvtu, field):
     return x, y, v, tris
 
 
+def cell_shape(pvtu):
+    """'hexahedra' (a 3D volume), 'quadrilaterals' (a 2D volume or a 3D
+    surface) or 'lines' (a 2D surface): the cells of the first piece."""
+    with open(pvtu) as f:
+        piece = re.search(r'<Piece Source="([^"]+)"', f.read()).group(1)
+    offsets = read_vtu(os.path.join(os.path.dirname(pvtu), piece))['offsets']
+    return {8: 'hexahedra', 4: 'quadrilaterals'}.get(offsets[0], 'lines')
+
+
+# The faces of a VTK hexahedron, each in cyclic order.
+HEX_FACES = ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
+
+
+def read_pvtu_slice(pvtu, field, axis=1, at=0.):
+    """A plane of a 3D .pvtu: the faces of its hexahedra that lie on
+    coordinate `axis` = `at` (a plane of the mesh's faces, such as y = 0,
+    the track's centre line), each once: the in-plane points (the two other
+    coordinates in order), the field's values there and the triangles."""
+    with open(pvtu) as f:
+        pieces = re.findall(r'<Piece Source="([^"]+)"', f.read())
+    inplane = [d for d in range(3) if d != axis]
+    a, b, v, tris = [], [], [], []
+    for piece in pieces:
+        d = read_vtu(os.path.join(os.path.dirname(pvtu), piece))
+        if field not in d:
+            sys.exit(f'no field {field} in {piece}')
+        p, values = d['points'], d[field]
+        conn, offsets = d['connectivity'], d['offsets']
+        scale = max(abs(c) for c in p) or 1.
+        index = {}  # piece's point -> slice's point
+
+        def point(i):
+            if i not in index:
+                index[i] = len(a)
+                a.append(p[3 * i + inplane[0]])
+                b.append(p[3 * i + inplane[1]])
+                v.append(values[i])
+            return index[i]
+        start = 0
+        for end in offsets:
+            cell = conn[start:end]
+            start = end
+            if len(cell) != 8:
+                continue
+            on = [abs(p[3 * i + axis] - at) < 1e-9 * scale for i in cell]
+            # the face on the plane, of the cell on its upper side only
+            if sum(on) != 4 or any(p[3 * i + axis] < at for i in cell):
+                continue
+            face = next(f for f in HEX_FACES if all(on[k] for k in f))
+            q = [point(cell[k]) for k in face]
+            tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+    if not tris:
+        sys.exit(f'{pvtu}: no cell faces on the plane of coordinate {axis} = {at}')
+    return a, b, v, tris
+
+
 def triangle_integrals(x, y, v, tris):
     """Per written triangle: its integral of the field (area times the mean
     of its corners' values, exact for the field linear on it) and its

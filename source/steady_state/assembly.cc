@@ -79,8 +79,8 @@ namespace viscoslide
                   update_values | update_gradients | update_JxW_values)
       , interface_values(fe,
                          flux_quadrature,
-                         update_values | update_normal_vectors |
-                           update_JxW_values)
+                         update_values | update_gradients |
+                           update_normal_vectors | update_JxW_values)
       , grad_phi_q(quadrature.size())
       , projected_grad_q(quadrature.size())
       , grad_phi(quadrature.size(), fe.n_dofs_per_cell())
@@ -151,7 +151,8 @@ namespace viscoslide
   // for each strain component of each arm k: the upwind DG form of
   // beta . grad eps_v,k + eps_v,k = eps(u), beta = (-V tau_k, 0), as in
   // step-12. eps_v^upwind is the value on the side that beta leaves
-  // (beta . n > 0); where material enters the block (x = +W/2) it is 0.
+  // (beta . n > 0); where material enters the block (x = +W/2) it is 0 in
+  // 2D and the relaxed strain eps(u) in 3D (assemble_boundary).
   // All but the surface terms are linear in the unknowns: their matrix A is
   // assembled once per speed and mesh (assemble_bulk), their residual is
   // -A x, and each Newton iteration assembles the surface alone.
@@ -432,8 +433,15 @@ namespace viscoslide
 
 
   // On the outflow boundary (beta . n > 0, x = -W/2) the outflow flux with
-  // the cell's own value. Inflow (x = +W/2) brings eps_v = 0: no term. The
-  // top surface is SurfaceCoupling's (assemble()).
+  // the cell's own value. Inflow (x = +W/2): in 2D eps_v = 0, the state far
+  // upstream, which the wide block's inflow face (some 100 contact widths
+  // away) nearly carries: no term. In 3D the block is a deep column whose
+  // free sides leave it compressed by the load uniformly along x; material
+  // entering it has relaxed to that, eps_v = eps(u). (eps_v = 0 there left
+  // the compression to relax inside the column, a dissipation that grows
+  // with its depth: it doubled the friction at V_hat 10 on a column 200 eps
+  // wide and 10 000 deep.) The top surface is SurfaceCoupling's
+  // (assemble()).
   template <int dim>
   void
   SteadyStateSolver<dim>::assemble_boundary(
@@ -447,6 +455,7 @@ namespace viscoslide
       return;
     scratch.interface_values.reinit(cell, face_no);
     const auto &values = scratch.interface_values.get_fe_face_values(0);
+    const FEValuesExtractors::Vector displacement(0);
     for (unsigned int c = 0; c < n_strain_components; ++c)
       {
         const auto &dofs = coefficients.strain_dofs[c];
@@ -454,14 +463,23 @@ namespace viscoslide
           {
             const double beta_n =
               -coefficients.ell[c] * values.normal_vector(q)[0];
-            if (beta_n <= 0)
-              continue;
             const double scale =
               coefficients.row_scale[c] * beta_n * values.JxW(q);
-            for (const unsigned int i : dofs)
-              for (const unsigned int j : dofs)
-                copy.cell_matrix(i, j) +=
-                  scale * values.shape_value(j, q) * values.shape_value(i, q);
+            if (beta_n > 0)
+              for (const unsigned int i : dofs)
+                for (const unsigned int j : dofs)
+                  copy.cell_matrix(i, j) +=
+                    scale * values.shape_value(j, q) * values.shape_value(i, q);
+            else if (beta_n < 0 && dim == 3)
+              for (const unsigned int i : dofs)
+                for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                  if (coefficients.component[j] < first_component<dim>)
+                    copy.cell_matrix(i, j) +=
+                      scale *
+                      ViscousStrain::component(
+                        values[displacement].symmetric_gradient(j, q),
+                        c % components_per_arm<dim>) *
+                      values.shape_value(i, q);
           }
       }
   }

@@ -446,8 +446,7 @@ namespace viscoslide
               "than 'Mesh/Finest surface cell' = " +
               num(p.mesh.finest_cell) +
               " eps: the arms relax inside one cell and the dissipation at "
-              "the contact edges is not resolved; expect the friction to "
-              "be "
+              "the contact edges is not resolved; expect the friction to be "
               "off by up to tens of percent (the energy balance printed "
               "with each row says how far), or refine the finest cell to "
               "about V tau");
@@ -469,11 +468,9 @@ namespace viscoslide
         }
       if (p.sliding.solver == SlidingSolver::transient && p.sliding.speed > 0)
         p.notes.push_back(
-          "Note: 'Sliding/Solver' = transient slides the indenter until "
-          "the "
+          "Note: 'Sliding/Solver' = transient slides the indenter until the "
           "contact is steady, typically thousands of eps in steps of the "
-          "finest cell: minutes per speed at R_hat 400, 20 minutes to "
-          "hours "
+          "finest cell: minutes per speed at R_hat 400, 20 minutes to hours "
           "at R_hat 1e4 (doc/benchmark.md). For the steady friction alone, "
           "'Sliding/Solver' = steady-state solves it directly (about a "
           "minute for a curve of 21 speeds at muT 1, 2-eps cells)");
@@ -579,7 +576,6 @@ namespace viscoslide
                  "element/Grading ratio'";
       require(gigabytes <= 0.8 * available, message.str());
     }
-
 
 
     void

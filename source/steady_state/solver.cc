@@ -554,6 +554,53 @@ namespace viscoslide
   // again after each success.
   template <int dim>
   bool
+  SteadyStateSolver<dim>::continue_in(const double         from,
+                                      const double         to,
+                                      double               step,
+                                      double               last_step,
+                                      const StepAttempt   &attempt,
+                                      const ValueCallback &undo,
+                                      const ValueCallback &accepted,
+                                      const ValueCallback &failed)
+  {
+    const double whole = std::abs(to - from);
+    for (double value = from; value != to;)
+      {
+        const double next =
+          to > value ? std::min(to, value + step) : std::max(to, value - step);
+        const TrilinosWrappers::MPI::Vector backup(solution);
+        const double                        this_step = next - value;
+        // In 3D a relaxation costs several Newton solves per pseudo-step:
+        // shorter steps first.
+        const int its = attempt(next,
+                                last_step != 0. ? this_step / last_step : 0.,
+                                backup,
+                                dim == 2 || step < 0.1 * whole);
+        if (its == -2)
+          return false;
+        if (its < 0)
+          {
+            solution = backup;
+            undo(value);
+            step *= 0.5;
+            if (step < 1e-3 * whole)
+              {
+                failed(next);
+                return false;
+              }
+            continue;
+          }
+        accepted(next);
+        last_step = this_step;
+        value     = next;
+        step      = std::min(whole, 2. * step);
+      }
+    return true;
+  }
+
+
+  template <int dim>
+  bool
   SteadyStateSolver<dim>::continue_to_load(
     const double                 target,
     const std::function<void()> &on_converged)
@@ -564,53 +611,41 @@ namespace viscoslide
     const double unit       = force ? scales.force : scales.eps;
     const double start = controlled, whole = std::abs(target - start);
     // of the controlled quantity over the last converged load step
-    double last_step = force ? last_load_step.force : last_load_step.delta;
-    double step =
-      last_step != 0. ? std::min(whole, 4. * std::abs(last_step)) : whole;
-    while (controlled != target)
-      {
-        const double                        next = target > controlled
-                                                     ? std::min(target, controlled + step)
-                                                     : std::max(target, controlled - step);
-        const TrilinosWrappers::MPI::Vector backup(solution);
-        const double delta0 = delta, force0 = coupling.held_force(),
-                     load0     = last_quantities.normal_force;
-        const double this_step = next - controlled;
-        controlled             = next;
-        predict_load_step(last_step != 0. ? this_step / last_step : 0.,
-                          backup,
-                          delta0);
-        const std::string what =
-          label(force ? "F_hat" : "delta_hat", next / unit);
-        // In 3D a relaxation costs several Newton solves per pseudo-step:
-        // shorter steps first.
-        const int its = solve_step(what,
-                                   backup,
-                                   force ? delta0 : next,
-                                   dim == 2 || step < 0.1 * whole);
-        if (its == -2)
-          return false;
-        if (its < 0)
-          {
-            solution              = backup;
-            delta                 = delta0;
-            coupling.held_force() = force0;
-            step *= 0.5;
-            if (step < 1e-3 * whole)
-              {
-                pcout << "Steady state: Newton failed at " << what
-                      << " even in steps of a thousandth of the way from "
-                      << start / unit << std::endl;
-                return false;
-              }
-            continue;
-          }
+    const double last_step =
+      force ? last_load_step.force : last_load_step.delta;
+    double     delta0 = delta, force0 = coupling.held_force(), load0 = 0.;
+    const auto what = [&](const double value) {
+      return label(force ? "F_hat" : "delta_hat", value / unit);
+    };
+    return continue_in(
+      start,
+      target,
+      last_step != 0. ? std::min(whole, 4. * std::abs(last_step)) : whole,
+      last_step,
+      [&](const double                         next,
+          const double                         ratio,
+          const TrilinosWrappers::MPI::Vector &backup,
+          const bool                           relax) {
+        delta0     = delta;
+        force0     = coupling.held_force();
+        load0      = last_quantities.normal_force;
+        controlled = next;
+        predict_load_step(ratio, backup, delta0);
+        return solve_step(what(next), backup, force ? delta0 : next, relax);
+      },
+      [&](double) {
+        delta                 = delta0;
+        coupling.held_force() = force0;
+      },
+      [&](double) {
         on_converged();
-        last_step      = this_step;
         last_load_step = {delta - delta0, last_quantities.normal_force - load0};
-        step           = std::min(whole, 2. * step);
-      }
-    return true;
+      },
+      [&](const double next) {
+        pcout << "Steady state: Newton failed at " << what(next)
+              << " even in steps of a thousandth of the way from "
+              << start / unit << std::endl;
+      });
   }
 
 
@@ -623,45 +658,38 @@ namespace viscoslide
   SteadyStateSolver<dim>::continue_in_attraction(
     const std::function<void(double)> &set_attraction)
   {
-    double attraction = 0., step = 0.25, last_step = 0.;
     // The load step's size carries over to the load continuation after
     // this one, its increment does not.
     const auto load_step = last_load_step;
     pcout << "Switching the law's attraction on at delta_hat = "
           << delta / scales.eps << " (the approach came in on its wall)"
           << std::endl;
-    while (attraction < 1.)
-      {
-        const double next = std::min(1., attraction + step);
-        const TrilinosWrappers::MPI::Vector backup(solution);
+    double     attraction = 0.;
+    const bool done       = continue_in(
+      0.,
+      1.,
+      0.25,
+      0.,
+      [&](const double                         next,
+          const double                         ratio,
+          const TrilinosWrappers::MPI::Vector &backup,
+          const bool                           relax) {
         set_attraction(next);
-        predict_load_step(last_step != 0. ? (next - attraction) / last_step
-                                          : 0.,
-                          backup,
-                          delta);
-        const int its =
-          solve_step(label("attraction", next), backup, delta, step < 0.1);
-        if (its == -2)
-          return false;
-        if (its < 0)
-          {
-            solution = backup;
-            set_attraction(attraction);
-            step *= 0.5;
-            if (step < 1e-3)
-              {
-                pcout << "Steady state: Newton failed at attraction " << next
-                      << " even in steps of a thousandth; last converged "
-                      << attraction << std::endl;
-                return false;
-              }
-            continue;
-          }
+        predict_load_step(ratio, backup, delta);
+        return solve_step(label("attraction", next), backup, delta, relax);
+      },
+      set_attraction,
+      [&](const double next) {
         pcout << "  the line above: attraction " << next << std::endl;
-        last_step  = next - attraction;
         attraction = next;
-        step       = std::min(1., 2. * step);
-      }
+      },
+      [&](const double next) {
+        pcout << "Steady state: Newton failed at attraction " << next
+              << " even in steps of a thousandth; last converged " << attraction
+              << std::endl;
+      });
+    if (!done)
+      return false;
     last_load_step = load_step;
     last_increment.clear();
     return true;

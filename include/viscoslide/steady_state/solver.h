@@ -249,6 +249,33 @@ namespace viscoslide
     // V_hat and load; the iterations used or -1.
     int
     solve_newton_or_relax();
+    // What continue_in() does with one step: set the parameter to `next`,
+    // start from the secant of the last step times `ratio`, solve from the
+    // converged state `last` (relaxing on a Newton failure if `relax`);
+    // solve_step()'s code.
+    using StepAttempt =
+      std::function<int(double                               next,
+                        double                               ratio,
+                        const TrilinosWrappers::MPI::Vector &last,
+                        bool                                 relax)>;
+    using ValueCallback = std::function<void(double)>;
+    // A continuation in one parameter from `from` to `to`: steps of `step`
+    // first (`last_step` the one before, for the secant), each by
+    // `attempt`; a failed step restores the solution, calls `undo` with the
+    // last converged value and is halved, down to a thousandth of the way
+    // (then `failed` with the step's value, and false); a converged one
+    // calls `accepted` with its value and doubles. The relaxation only for
+    // steps below a tenth of the way in 3D. False also if a step failed on
+    // an adapted mesh.
+    bool
+    continue_in(double               from,
+                double               to,
+                double               step,
+                double               last_step,
+                const StepAttempt   &attempt,
+                const ValueCallback &undo,
+                const ValueCallback &accepted,
+                const ValueCallback &failed);
     // One step of a continuation from the converged state `last`: Newton
     // from the present solution, else the relaxation from `last` at
     // approach `last_delta` (the step's own under displacement control),

@@ -118,6 +118,14 @@ namespace viscoslide
             "resolves it");
       }
 
+      // This machine's physical memory, in GB.
+      double
+      this_machine_memory_gb()
+      {
+        return double(sysconf(_SC_PHYS_PAGES)) *
+               double(sysconf(_SC_PAGE_SIZE)) / 1e9;
+      }
+
       // The memory of the machines this run has, in GB: this machine's times
       // the nodes the processes are spread over, read from the environment
       // of Open MPI's mpirun or of Slurm (so that no collective call is
@@ -125,9 +133,8 @@ namespace viscoslide
       double
       machine_memory_gb()
       {
-        const double one = double(sysconf(_SC_PHYS_PAGES)) *
-                           double(sysconf(_SC_PAGE_SIZE)) / 1e9;
-        const auto number = [](const char *name) {
+        const double one    = this_machine_memory_gb();
+        const auto   number = [](const char *name) {
           const char *value = std::getenv(name);
           return value == nullptr ? 0 : std::atoi(value);
         };
@@ -515,9 +522,8 @@ namespace viscoslide
         (length / spacing) * (p.geometry.length() / spacing);
       // GMRES keeps up to 102 vectors of the grid, the rest about 40; four
       // fifths of this machine's memory may go to them.
-      const double gigabytes          = 150. * 8. * points / 1e9;
-      const double max_grid_gigabytes = 0.8 * double(sysconf(_SC_PHYS_PAGES)) *
-                                        double(sysconf(_SC_PAGE_SIZE)) / 1e9;
+      const double       gigabytes          = 150. * 8. * points / 1e9;
+      const double       max_grid_gigabytes = 0.8 * this_machine_memory_gb();
       std::ostringstream message;
       message << "the 3D boundary-element grid of " << points << " points ("
               << length << " x " << p.geometry.length() << " eps at "
@@ -564,9 +570,8 @@ namespace viscoslide
                                              std::max(a, 50.))
                              .size() -
                            1;
-      const double gigabytes = 4. * 8. * cells * cells / 1e9;
-      const double available =
-        double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)) / 1e9;
+      const double       gigabytes = 4. * 8. * cells * cells / 1e9;
+      const double       available = this_machine_memory_gb();
       std::ostringstream message;
       message << what << " about the JKR contact (" << 2 * a
               << " eps wide) has about " << cells << " cells, whose dense "

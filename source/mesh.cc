@@ -18,6 +18,22 @@ namespace viscoslide
     {
       return std::max(1., std::round(length / std::min(W, H)));
     }
+
+    // The block's coarse cells along x, y (and z): about square, and in 3D
+    // an even number across, so that the track's centre line y = 0 is one
+    // of the cells' faces.
+    template <int dim>
+    std::vector<unsigned int>
+    coarse_subdivisions(const Parameters::AllParameters &prm)
+    {
+      const double W = prm.geometry.domain_width, H = prm.geometry.height();
+      if constexpr (dim == 2)
+        return {n_coarse_cells(W, W, H), n_coarse_cells(H, W, H)};
+      const double L = prm.geometry.length(), side = std::min({W, L, H});
+      return {n_coarse_cells(W, side, side),
+              2 * n_coarse_cells(L / 2, side, side),
+              n_coarse_cells(H, side, side)};
+    }
   } // namespace
 
 
@@ -29,24 +45,18 @@ namespace viscoslide
     const double W = prm.geometry.domain_width, H = prm.geometry.height();
     if constexpr (dim == 2)
       GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                {n_coarse_cells(W, W, H),
-                                                 n_coarse_cells(H, W, H)},
+                                                coarse_subdivisions<2>(prm),
                                                 Point<2>(-W / 2, -H),
                                                 Point<2>(W / 2, 0),
                                                 true);
     else
       {
-        const double L = prm.geometry.length(), side = std::min({W, L, H});
-        GridGenerator::subdivided_hyper_rectangle(
-          triangulation,
-          {n_coarse_cells(W, side, side),
-           // even across, so that the track's centre line y = 0 is one
-           // of the cells' faces
-           2 * n_coarse_cells(L / 2, side, side),
-           n_coarse_cells(H, side, side)},
-          Point<3>(-W / 2, -L / 2, -H),
-          Point<3>(W / 2, L / 2, 0),
-          true);
+        const double L = prm.geometry.length();
+        GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                  coarse_subdivisions<3>(prm),
+                                                  Point<3>(-W / 2, -L / 2, -H),
+                                                  Point<3>(W / 2, L / 2, 0),
+                                                  true);
       }
   }
 
@@ -80,10 +90,7 @@ namespace viscoslide
     double
     coarse_cell_width(const Parameters::AllParameters &prm)
     {
-      const double W = prm.geometry.domain_width, H = prm.geometry.height();
-      const double side =
-        dim == 2 ? std::min(W, H) : std::min({W, prm.geometry.length(), H});
-      return W / n_coarse_cells(W, side, side);
+      return prm.geometry.domain_width / coarse_subdivisions<dim>(prm)[0];
     }
 
     // The refinement level a cell at distance d from the contact edges
@@ -192,7 +199,7 @@ namespace viscoslide
                              const double                     limit)
   {
     const double W = prm.geometry.domain_width, L = prm.geometry.length(),
-                 H = prm.geometry.height(), side = std::min({W, L, H});
+                 H = prm.geometry.height();
     const LevelRule level_at(prm, coarse_cell_width<3>(prm));
     // The ring widened by the margin, as flag_cells_near_edges widens each
     // edge; with a uniform surface the whole top is the edge.
@@ -234,12 +241,9 @@ namespace viscoslide
           self(self, a, b, level + 1);
         }
     };
-    const unsigned int n[3] = {
-      static_cast<unsigned int>(n_coarse_cells(W, side, side)),
-      2 * static_cast<unsigned int>(n_coarse_cells(L / 2, side, side)),
-      static_cast<unsigned int>(n_coarse_cells(H, side, side))};
-    const Point<3> origin(-W / 2, -L / 2, -H);
-    const double   size[3] = {W / n[0], L / n[1], H / n[2]};
+    const std::vector<unsigned int> n = coarse_subdivisions<3>(prm);
+    const Point<3>                  origin(-W / 2, -L / 2, -H);
+    const double                    size[3] = {W / n[0], L / n[1], H / n[2]};
     for (unsigned int i = 0; i < n[0]; ++i)
       for (unsigned int j = 0; j < n[1]; ++j)
         for (unsigned int k = 0; k < n[2]; ++k)

@@ -545,13 +545,6 @@ namespace viscoslide
   }
 
 
-  // Continuation in the controlled quantity at the current speed: F_n under
-  // force control, delta under displacement control. Steps are linear (the
-  // load may change sign): the whole way first, or four times the last
-  // load step's change of the controlled quantity (the approach's, when
-  // force control takes over from it) where the predictor extrapolates
-  // that step; halved on failure down to a thousandth of the way, doubled
-  // again after each success.
   template <int dim>
   bool
   SteadyStateSolver<dim>::continue_in(const double         from,
@@ -599,6 +592,13 @@ namespace viscoslide
   }
 
 
+  // Continuation in the controlled quantity at the current speed: F_n under
+  // force control, delta under displacement control. Steps are linear (the
+  // load may change sign): the whole way first, or four times the last
+  // load step's change of the controlled quantity (the approach's, when
+  // force control takes over from it) where the predictor extrapolates
+  // that step; halved on failure down to a thousandth of the way, doubled
+  // again after each success.
   template <int dim>
   bool
   SteadyStateSolver<dim>::continue_to_load(

@@ -2,6 +2,7 @@
 // residual and Jacobian, assembled on MeshWorker::mesh_loop (step-12).
 #include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
 
 #include <deal.II/lac/full_matrix.h>
 
@@ -301,14 +302,17 @@ namespace viscoslide
 
     // Each locally owned cell assembles its own rows only, also on faces
     // with ghost neighbours: every interior face twice, once from each
-    // side (assemble_interface() skips the ghost side).
+    // side.
     auto flags =
       MeshWorker::assemble_own_cells | MeshWorker::assemble_boundary_faces;
     if (V_hat > 0.)
       flags |= MeshWorker::assemble_own_interior_faces_both |
                MeshWorker::assemble_ghost_faces_both;
-    MeshWorker::mesh_loop(dof_handler.begin_active(),
-                          dof_handler.end(),
+    // Over the locally owned cells only: mesh_loop calls the copier after
+    // every cell it visits, and on a ghost or artificial cell, where no
+    // worker runs, it would add the previous cell's matrix once more.
+    MeshWorker::mesh_loop(filter_iterators(dof_handler.active_cell_iterators(),
+                                           IteratorFilters::LocallyOwnedCell()),
                           cell_worker,
                           copier,
                           AssemblyScratch(fe, quadrature, flux_quadrature),

@@ -381,14 +381,29 @@ namespace viscoslide
           p.notes.push_back(note.str());
           p.notes.push_back(
             "Warning: the 3D finite elements are verified on coarse meshes "
-            "only (doc/steady_state.md, In three dimensions): at rest "
-            "against Hertz and the boundary elements; sliding without "
-            "adhesion on 4-eps cells, their friction is 9 to 26 % below the "
-            "boundary elements' at V_hat 1 to 100 (the contact edges are "
-            "not resolved); with adhesion it is not yet measured. Use "
-            "'Sliding/Solver' = boundary-element for the friction, and "
-            "refine 'Mesh/Finest surface cell' to see whether a case is "
-            "converged");
+            "only (doc/steady_state.md, In three dimensions): on 4-eps "
+            "cells their friction is 2.6 to 3.5 % below the boundary "
+            "elements' at V_hat 0.01 to 10 without adhesion, 4 to 7 % at "
+            "Tabor parameter 1. Use 'Sliding/Solver' = boundary-element "
+            "for the friction, and refine 'Mesh/Finest surface cell' to "
+            "see whether a case is converged");
+          // The 2D block is widened to the wake (fit_block_to_wake); the
+          // 3D one is not yet.
+          const double wake = (p.sliding.speeds.empty()
+                                 ? 0.
+                                 : *std::max_element(p.sliding.speeds.begin(),
+                                                     p.sliding.speeds.end())) *
+                              longest_creep_time(p);
+          if (p.geometry.domain_width < Geometry::default_wake_lengths * wake)
+            p.notes.push_back(
+              "Warning: the 3D block, " + num(p.geometry.domain_width) +
+              " eps wide, is shorter than 20 wake lengths V tau_c (" +
+              num(wake) +
+              " eps at the fastest speed): there the friction and the "
+              "contact are not the half-space's (at V_hat 100 on a block of "
+              "200 eps the "
+              "friction was 13 % high, the area 7 % small); widen "
+              "'Geometry/Domain width' or use the boundary elements");
         }
       // The cohesive zone of a crack under the law's peak stress: about
       // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.
@@ -642,6 +657,13 @@ namespace viscoslide
               "'Geometry/Dimension' = 3 needs 'Sliding/Solver' = "
               "boundary-element or steady-state (and no other in "
               "'Sweep/Solvers'): the transient solver is plane strain");
+      require(p.geometry.dimension == 2 ||
+                p.geometry.substrate == Substrate::layer ||
+                !boundary_elements_only(p) ||
+                p.geometry.domain_height == Geometry::default_domain_height,
+              "'Geometry/Domain height' is the depth of the 3D finite "
+              "elements' block; the boundary elements' half-space is "
+              "infinite: remove it");
       if (p.geometry.dimension == 3 && !boundary_elements_only(p))
         check_finite_elements_3d_fit(p);
       if (p.sliding.solver == SlidingSolver::boundary_element)

@@ -21,7 +21,9 @@ namespace viscoslide
 
     // The block's coarse cells along x, y (and z): about square, and in 3D
     // an even number across, so that the track's centre line y = 0 is one
-    // of the cells' faces.
+    // of the cells' faces, and in 3D at most half the block's smallest
+    // side (one cell as wide as the block, graded towards the contact,
+    // held nearly twice the unknowns).
     template <int dim>
     std::vector<unsigned int>
     coarse_subdivisions(const Parameters::AllParameters &prm)
@@ -29,7 +31,7 @@ namespace viscoslide
       const double W = prm.geometry.domain_width, H = prm.geometry.height();
       if constexpr (dim == 2)
         return {n_coarse_cells(W, W, H), n_coarse_cells(H, W, H)};
-      const double L = prm.geometry.length(), side = std::min({W, L, H});
+      const double L = prm.geometry.length(), side = std::min({W, L, H}) / 2;
       return {n_coarse_cells(W, side, side),
               2 * n_coarse_cells(L / 2, side, side),
               n_coarse_cells(H, side, side)};
@@ -327,12 +329,17 @@ namespace viscoslide
                         Patterns::Double(),
                         "W/eps, the lateral extent of the block (x from "
                         "-W/2 to W/2). Lateral sides are traction free.");
-      prm.declare_entry("Domain height",
-                        std::to_string(Geometry::default_domain_height),
-                        Patterns::Double(),
-                        "H/eps of the half-plane block. Under displacement "
-                        "control the approach delta depends on it "
-                        "logarithmically (plane strain).");
+      prm.declare_entry(
+        "Domain height",
+        std::to_string(Geometry::default_domain_height),
+        Patterns::Double(),
+        "H/eps of the half-plane block. Under displacement "
+        "control the approach delta depends on it "
+        "logarithmically (plane strain). With Dimension = 3 "
+        "the depth of the finite elements' block, by "
+        "default (10000) the Domain width: a much deeper "
+        "block bends under the friction force "
+        "(doc/steady_state.md, In three dimensions, The block).");
       prm.declare_entry(
         "Indenter elongation",
         "1",
@@ -391,12 +398,10 @@ namespace viscoslide
               "'Geometry/Indenter elongation' and 'Geometry/Domain length' "
               "are for 'Geometry/Dimension' = 3; in 2D the indenter is a "
               "cylinder and the forces are per unit length: remove them");
-      require(dimension == 2 || (domain_height == default_domain_height &&
-                                 wake_lengths == default_wake_lengths),
-              "'Geometry/Domain height' and 'Geometry/Wake lengths' size "
-              "the 2D block; with 'Geometry/Dimension' = 3 the half-space "
-              "is infinite and a layer is as deep as its thickness: remove "
-              "them");
+      require(dimension == 2 || wake_lengths == default_wake_lengths,
+              "'Geometry/Wake lengths' sizes the 2D block; with "
+              "'Geometry/Dimension' = 3 give 'Geometry/Domain width' "
+              "instead: remove it");
       require(elongation > 0 && std::isfinite(elongation),
               entry("Geometry", "Indenter elongation", elongation) +
                 " must be positive");

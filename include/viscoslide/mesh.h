@@ -33,9 +33,9 @@ namespace viscoslide
       static constexpr int default_wake_lengths  = 20;
 
       // 2: plane strain, a cylinder on a block; 3: a body of revolution
-      // (a sphere) on a half-space or layer, boundary elements only (the
-      // steady-state finite elements are written for 3D too, but not yet
-      // verified there: doc/steady_state.md).
+      // (a sphere) on a half-space or layer, by the boundary elements or
+      // the steady-state finite elements (verified on coarse meshes:
+      // doc/steady_state.md).
       unsigned int dimension;
       Substrate    substrate;
       double       layer_thickness;
@@ -60,11 +60,19 @@ namespace viscoslide
         return domain_length > 0 ? domain_length : domain_width;
       }
 
-      // The height of the block actually meshed.
+      // The height of the block actually meshed. The 3D block is by
+      // default as deep as it is wide: fixed at its base and free on its
+      // sides, a much deeper one bends under the friction force like a
+      // cantilever and tilts the surface under the indenter (a column 50
+      // times deeper than wide lost a quarter of the friction).
       double
       height() const
       {
-        return substrate == Substrate::layer ? layer_thickness : domain_height;
+        if (substrate == Substrate::layer)
+          return layer_thickness;
+        return dimension == 3 && domain_height == default_domain_height
+                 ? domain_width
+                 : domain_height;
       }
     };
 

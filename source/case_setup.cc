@@ -75,6 +75,17 @@ namespace viscoslide
                boundary_elements_only(p);
       }
 
+      // The wake V tau_c of the fastest listed speed, in eps (0 without
+      // speeds).
+      double
+      fastest_wake(const AllParameters &p)
+      {
+        const auto &V = p.sliding.speeds;
+        return V.empty() ? 0.
+                         : *std::max_element(V.begin(), V.end()) *
+                             longest_creep_time(p);
+      }
+
       // The listed speeds (comma-separated; empty if none) at which the
       // relaxation length V tau is shorter than `length`; tau in units of
       // tau_ref, lengths in eps.
@@ -257,7 +268,7 @@ namespace viscoslide
         return;
       const double V =
         *std::max_element(p.sliding.speeds.begin(), p.sliding.speeds.end());
-      const double wake  = V * longest_creep_time(p);
+      const double wake  = fastest_wake(p);
       const double width = p.geometry.wake_lengths * wake, depth = width / 4;
       const bool   layer = p.geometry.substrate == Substrate::layer;
       const bool   force = p.sliding.control == Control::force;
@@ -389,11 +400,7 @@ namespace viscoslide
             "see whether a case is converged");
           // The 2D block is widened to the wake (fit_block_to_wake); the
           // 3D one is not yet.
-          const double wake = (p.sliding.speeds.empty()
-                                 ? 0.
-                                 : *std::max_element(p.sliding.speeds.begin(),
-                                                     p.sliding.speeds.end())) *
-                              longest_creep_time(p);
+          const double wake = fastest_wake(p);
           if (p.geometry.domain_width < Geometry::default_wake_lengths * wake)
             p.notes.push_back(
               "Warning: the 3D block, " + num(p.geometry.domain_width) +
@@ -401,8 +408,7 @@ namespace viscoslide
               num(wake) +
               " eps at the fastest speed): there the friction and the "
               "contact are not the half-space's (at V_hat 100 on a block of "
-              "200 eps the "
-              "friction was 13 % high, the area 7 % small); widen "
+              "200 eps the friction was 13 % high, the area 7 % small); widen "
               "'Geometry/Domain width' or use the boundary elements");
         }
       // The cohesive zone of a crack under the law's peak stress: about
@@ -521,18 +527,13 @@ namespace viscoslide
                           const double         spacing,
                           const double         width)
     {
-      double fastest = 0;
-      for (const double V : p.sliding.speeds)
-        fastest = std::max(fastest, V);
       // The isolated half-space's window is the Domain width square; a
       // periodic layer's period along x grows with the wake.
-      const double length = p.geometry.substrate == Substrate::half_plane
-                              ? width
-                            : p.boundary_element.period > 0
-                              ? p.boundary_element.period
-                              : std::max(width,
-                                         p.boundary_element.wake_periods *
-                                           fastest * longest_creep_time(p));
+      const double length =
+        p.geometry.substrate == Substrate::half_plane ? width
+        : p.boundary_element.period > 0
+          ? p.boundary_element.period
+          : std::max(width, p.boundary_element.wake_periods * fastest_wake(p));
       const double points =
         (length / spacing) * (p.geometry.length() / spacing);
       // GMRES keeps up to 102 vectors of the grid, the rest about 40; four

@@ -506,9 +506,8 @@ namespace viscoslide
     AssemblyScratch            &scratch,
     AssemblyCopy               &copy) const
   {
-    // Only the rows of a locally owned cell (checked before the costly
-    // reinit).
-    if (!cell->is_locally_owned() || !carries_flux(cell, face_no))
+    // mesh_loop visits the locally owned cells only (assemble_bulk).
+    if (!carries_flux(cell, face_no))
       return;
     // The block depends on the pair's geometry alone (see
     // AssemblyScratch::matrix_of_shape).

@@ -95,8 +95,10 @@ namespace viscoslide
         add(words(sw.loads), "F", [](const std::string &v) {
           return std::vector<Setting>{{"Loading", "Target load", v}};
         });
+        // A case runs one solver: its checks and notes are that solver's.
         add(words(sw.solvers), "", [](const std::string &v) {
-          return std::vector<Setting>{{"Sliding", "Solver", v}};
+          return std::vector<Setting>{{"Sliding", "Solver", v},
+                                      {"Sweep", "Solvers", ""}};
         });
         add(words(sw.controls), "", [](const std::string &v) {
           return std::vector<Setting>{{"Sliding", "Control", v}};

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace viscoslide
@@ -295,6 +296,22 @@ namespace viscoslide
   {
     namespace
     {
+      // 'Geometry/Wake lengths': a number, or 'automatic' for the
+      // dimension's.
+      double
+      wake_lengths_of(const std::string &text, const unsigned int dimension)
+      {
+        if (text == "automatic")
+          return dimension == 2 ? 20 : 4;
+        std::istringstream in(text);
+        double             n = -1;
+        in >> n;
+        require(in && in.peek() == EOF && n >= 0 && std::isfinite(n),
+                "'Geometry/Wake lengths' = '" + text +
+                  "' is neither 'automatic' nor a number of wake lengths "
+                  "(0 or more)");
+        return n;
+      }
     } // namespace
 
 
@@ -359,22 +376,27 @@ namespace viscoslide
         "width.");
       prm.declare_entry(
         "Wake lengths",
-        std::to_string(Geometry::default_wake_lengths),
-        Patterns::Double(0.),
+        "automatic",
+        Patterns::Anything(),
         "The steady-state solver needs the wake, the solid relaxing "
         "over V tau_c behind the contact (tau_c the creep time), inside "
-        "its block, or it underestimates the friction at high speed. "
+        "its block, or it misses part of the friction at high speed. "
         "Under force control it widens the block to at least this many "
-        "wake lengths of the fastest listed speed and deepens a "
-        "half-plane to a quarter of that; the boundary elements approach "
-        "on the same depth. Under displacement and spring control the "
-        "block stays as given (it sets the reference of delta) and a "
-        "warning says when it is too small; a layer is widened under "
-        "every control. Set 0 to keep Domain width and height as given, "
-        "for example for a periodic profile whose wavelength is the "
-        "width, or with Mesh/Uniform surface (which keeps them anyway).");
+        "wake lengths of the fastest listed speed: in 2D the width, and "
+        "a half-plane's depth to a quarter of that; in 3D the length "
+        "along the track (x) alone. 'automatic': 20 in 2D, 4 in 3D "
+        "(doc/model.md, Block and wake; doc/steady_state.md, The "
+        "block). The 2D boundary elements approach on the same depth. "
+        "Under displacement and spring control the block stays as given "
+        "(it sets the reference of delta) and a warning says when it is "
+        "too small; a layer is widened under every control. Set 0 to "
+        "keep the block as given, for example for a periodic profile "
+        "whose wavelength is the width, or with Mesh/Uniform surface "
+        "(which keeps it anyway).");
       prm.leave_subsection();
     }
+
+
 
     void
     Geometry::parse(ParameterHandler &prm)
@@ -386,7 +408,7 @@ namespace viscoslide
       layer_thickness = prm.get_double("Layer thickness");
       domain_width    = prm.get_double("Domain width");
       domain_height   = prm.get_double("Domain height");
-      wake_lengths    = prm.get_double("Wake lengths");
+      wake_lengths    = wake_lengths_of(prm.get("Wake lengths"), dimension);
       elongation      = prm.get_double("Indenter elongation");
       domain_length   = prm.get_double("Domain length");
       prm.leave_subsection();
@@ -398,10 +420,6 @@ namespace viscoslide
               "'Geometry/Indenter elongation' and 'Geometry/Domain length' "
               "are for 'Geometry/Dimension' = 3; in 2D the indenter is a "
               "cylinder and the forces are per unit length: remove them");
-      require(dimension == 2 || wake_lengths == default_wake_lengths,
-              "'Geometry/Wake lengths' sizes the 2D block; with "
-              "'Geometry/Dimension' = 3 give 'Geometry/Domain width' "
-              "instead: remove it");
       require(elongation > 0 && std::isfinite(elongation),
               entry("Geometry", "Indenter elongation", elongation) +
                 " must be positive");

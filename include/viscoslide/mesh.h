@@ -30,7 +30,6 @@ namespace viscoslide
     struct Geometry
     {
       static constexpr int default_domain_height = 10000;
-      static constexpr int default_wake_lengths  = 20;
 
       // 2: plane strain, a cylinder on a block; 3: a body of revolution
       // (a sphere) on a half-space or layer, by the boundary elements or

@@ -306,10 +306,9 @@ namespace viscoslide
     {
       if (p.geometry.dimension == 3)
         return fit_3d_block_to_wake(p);
-      // A uniform surface would grow with the block; the 3D boundary
-      // elements have no block (an isolated half-space, or a layer whose
-      // period follows the wake), nor has the graded grid (its wake is in
-      // closed form, the Domain height only the reference of delta).
+      // A uniform surface would grow with the block; the graded grid has
+      // none (its wake is in closed form, the Domain height only the
+      // reference of delta).
       if (graded_grid_only(p) || p.sliding.solver == SlidingSolver::transient ||
           p.geometry.wake_lengths == 0 || p.sliding.speeds.empty() ||
           p.mesh.uniform_surface)

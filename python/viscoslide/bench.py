@@ -277,13 +277,22 @@ def fem3d(argv):
     0.0075) at rest and at V_hat 1 on meshes given as "finest cell:grading"
     (default "8:1 4:1 4:0.5"), per run the wall time, the unknowns, the
     peak memory (summed over the processes, and per unknown), GMRES
-    iterations per solve, and mu and A_hat at V_hat 1.
+    iterations per solve, and mu and A_hat at V_hat 1. With the case
+    'approach' the sphere is pressed to delta_hat 3 under displacement
+    control and slides at V_hat 1e-4 alone (no load step: the iterative
+    solver's Newton iterations there are each a full solve).
 
-        scripts/bench_fem3d ["meshes"] ["solvers"] ["procs"]"""
+        scripts/bench_fem3d ["meshes"] ["solvers"] ["procs"] [load|approach]"""
     prepare()
     meshes = (argv[0] if argv else '8:1 4:1 4:0.5').split()
     solvers = (argv[1] if len(argv) > 1 else 'direct iterative').split()
     procs = (argv[2] if len(argv) > 2 else '2 1').split()
+    case = argv[3] if len(argv) > 3 else 'load'
+    if case not in ('load', 'approach'):
+        sys.exit(f"bench_fem3d: the case is 'load' or 'approach', not {case!r}")
+    settings = {'Sliding/Sliding speed': '1'} if case == 'load' else {
+        'Sliding/Sliding speed': '0.0001', 'Sliding/Control': 'displacement',
+        'Loading/Final approach': '3', 'Loading/Target load': None}
     work = tempfile.mkdtemp()
     print(f"{'mesh':<7} {'solver':<9} {'procs':>5} {'wall_s':>8} {'unknowns':>9} "
           f"{'peak_GB':>8} {'kB/unknown':>10} {'its/solve':>9} {'mu':>9} {'A_hat':>7}", flush=True)
@@ -296,7 +305,7 @@ def fem3d(argv):
                     'tests/sphere_fem_hertz.prm', out + '.prm',
                     {'Output/Output directory': out, 'Mesh/Finest surface cell': cell,
                      'Mesh/Mesh grading': grading, 'Solver/Linear solver': solver,
-                     'Sliding/Sliding speed': '1'})
+                     **settings})
                 code, wall = timed_run(mpirun(np, path), out + '.log')
                 table = rows(f'{out}/steady_state.csv', False)
                 if code or not table:

@@ -167,9 +167,9 @@ namespace viscoslide
       double
       direct_gb_per_unknown(const double unknowns)
       {
-        return 22.3e-6 * std::cbrt(unknowns / 1e5);
+        return 26e-6 * std::cbrt(unknowns / 1e5);
       }
-      constexpr double iterative_gb_per_unknown = 18e-6;
+      constexpr double iterative_gb_per_unknown = 19e-6;
 
       // The size of the 3D finite elements with the mesh about the largest
       // contact of the case, the relaxed one at the Target load (JKR's with

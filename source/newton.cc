@@ -262,6 +262,16 @@ namespace viscoslide
                         "500000",
                         Patterns::Integer(1),
                         "See Linear solver.");
+      prm.declare_entry(
+        "Displacement block",
+        "multigrid",
+        Patterns::Selection(choice_pattern<DisplacementBlock>()),
+        "The iterative steady-state solver's inverse of its displacement "
+        "block A~: 'multigrid', one V-cycle of algebraic multigrid (ML); "
+        "'direct', a sparse factorization of A~ on one process (KLU), "
+        "exact but serial and slow in 3D: it measures what the V-cycle "
+        "costs in GMRES iterations (doc/steady_state.md, The iterative "
+        "linear solver).");
       prm.declare_entry("Newton tolerance",
                         "1e-9",
                         Patterns::Double(),
@@ -292,7 +302,10 @@ namespace viscoslide
       linear_solver       = parse_choice<LinearSolver>(prm.get("Linear solver"),
                                                  "Solver/Linear solver");
       direct_solver_limit = prm.get_integer("Direct solver limit");
-      newton_tolerance    = prm.get_double("Newton tolerance");
+      displacement_block =
+        parse_choice<DisplacementBlock>(prm.get("Displacement block"),
+                                        "Solver/Displacement block");
+      newton_tolerance      = prm.get_double("Newton tolerance");
       max_newton_iterations = prm.get_integer("Maximum Newton iterations");
       line_search           = prm.get_bool("Line search");
       max_relaxation_steps  = prm.get_integer("Maximum relaxation steps");

@@ -28,16 +28,27 @@ namespace viscoslide
     };
     VISCOSLIDE_CHOICES(LinearSolver, "automatic", "direct", "iterative")
 
+    // How the iterative solver applies the inverse of the displacement
+    // block A~: one multigrid V-cycle, or a sparse factorization (exact,
+    // serial: for measuring what the V-cycle costs in iterations).
+    enum class DisplacementBlock
+    {
+      multigrid,
+      direct
+    };
+    VISCOSLIDE_CHOICES(DisplacementBlock, "multigrid", "direct")
+
     // The 'Solver' section: Newton's method and its linear solves.
     struct Solver
     {
-      LinearSolver linear_solver;
-      unsigned int direct_solver_limit;
-      double       newton_tolerance;
-      unsigned int max_newton_iterations;
-      bool         line_search;
-      unsigned int max_relaxation_steps;
-      bool         verbose;
+      LinearSolver      linear_solver;
+      unsigned int      direct_solver_limit;
+      DisplacementBlock displacement_block;
+      double            newton_tolerance;
+      unsigned int      max_newton_iterations;
+      bool              line_search;
+      unsigned int      max_relaxation_steps;
+      bool              verbose;
 
       // Whether a Newton system of n unknowns goes to the direct solver:
       // 'direct', or 'automatic' up to direct_solver_limit.

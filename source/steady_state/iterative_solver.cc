@@ -25,10 +25,13 @@
 namespace viscoslide
 {
   template <int dim>
-  SteadyIterativeSolver<dim>::SteadyIterativeSolver(TimerOutput &timer,
-                                                    MPI_Comm     comm)
+  SteadyIterativeSolver<dim>::SteadyIterativeSolver(
+    TimerOutput                        &timer,
+    MPI_Comm                            comm,
+    const Parameters::DisplacementBlock displacement_block)
     : timer(timer)
     , comm(comm)
+    , displacement_block(displacement_block)
   {
   }
 
@@ -344,6 +347,9 @@ namespace viscoslide
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
     list.set("null space: vectors", rigid_body_modes.data());
+    // One level: ML applies its coarse solver, KLU, to A~ itself.
+    if (displacement_block == Parameters::DisplacementBlock::direct)
+      list.set("max levels", 1);
     amg =
       std::make_unique<ML_Epetra::MultiLevelPreconditioner>(*block, list, true);
   }

@@ -35,6 +35,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <viscoslide/newton.h>
+
 #include <memory>
 #include <vector>
 
@@ -53,7 +55,9 @@ namespace viscoslide
   class SteadyIterativeSolver
   {
   public:
-    SteadyIterativeSolver(TimerOutput &timer, MPI_Comm comm);
+    SteadyIterativeSolver(TimerOutput                  &timer,
+                          MPI_Comm                      comm,
+                          Parameters::DisplacementBlock displacement_block);
     ~SteadyIterativeSolver();
 
     // After every setup: which unknowns are displacements (components 0 to
@@ -107,8 +111,9 @@ namespace viscoslide
     sweep(const TrilinosWrappers::MPI::Vector &r,
           TrilinosWrappers::MPI::Vector       &z) const;
 
-    TimerOutput &timer;
-    MPI_Comm     comm;
+    TimerOutput                        &timer;
+    MPI_Comm                            comm;
+    const Parameters::DisplacementBlock displacement_block;
 
     IndexSet owned;
     // The owned displacement unknowns, node by node (the dim components of

@@ -86,7 +86,6 @@ namespace viscoslide
     FEValues<dim> points(mapping, fe, support, update_quadrature_points);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::vector<bool>                    seen(owned.n_elements(), false);
-    std::vector<types::global_dof_index> relevant;
     std::vector<std::vector<double>>     modes(n_modes);
     // The owned cells' strain rows by component, and the x of the cells'
     // centres for the sweep order.
@@ -94,14 +93,9 @@ namespace viscoslide
     std::vector<std::pair<double, StrainBlock>> cells;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        if (cell->is_artificial())
-          continue;
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          if (fe.system_to_component_index(i).first < dim)
-            relevant.push_back(dofs[i]);
         if (!cell->is_locally_owned())
           continue;
+        cell->get_dof_indices(dofs);
         points.reinit(cell);
         for (unsigned int k = 0; k < u_fe.n_dofs_per_cell(); ++k)
           {
@@ -140,13 +134,6 @@ namespace viscoslide
       blocks.push_back(std::move(c.second));
     for (const auto &m : modes)
       rigid_body_modes.insert(rigid_body_modes.end(), m.begin(), m.end());
-
-    std::sort(relevant.begin(), relevant.end());
-    relevant.erase(std::unique(relevant.begin(), relevant.end()),
-                   relevant.end());
-    relevant_displacement = IndexSet(dof_handler.n_dofs());
-    relevant_displacement.add_indices(relevant.begin(), relevant.end());
-    relevant_displacement.compress();
 
     std::vector<int> gids(displacement.begin(), displacement.end());
     map = std::make_unique<Epetra_Map>(
@@ -251,6 +238,29 @@ namespace viscoslide
   }
 
 
+  // Whether each column of m is a displacement unknown, asked of the
+  // displacement map's directory: a row's columns reach beyond the ghost
+  // cells (through hanging nodes and through D_K^-1), so what this process
+  // knows of its neighbours does not decide it.
+  template <int dim>
+  std::vector<bool>
+  SteadyIterativeSolver<dim>::displacement_columns(
+    const Epetra_CrsMatrix &m) const
+  {
+    const Epetra_Map &columns = m.ColMap();
+    const int         n       = columns.NumMyElements();
+    std::vector<int>  owner(n), local(n);
+    map->RemoteIDList(n,
+                      columns.MyGlobalElements(),
+                      owner.data(),
+                      local.data());
+    std::vector<bool> is_displacement(n);
+    for (int k = 0; k < n; ++k)
+      is_displacement[k] = owner[k] >= 0;
+    return is_displacement;
+  }
+
+
   // A~ = A - sum_K B_K D_K^-1 C_K on the owned displacement rows, node by
   // node, and ML's hierarchy on it.
   template <int dim>
@@ -288,6 +298,8 @@ namespace viscoslide
     amg.reset(); // before the matrix it was built on
     const Epetra_CrsMatrix &a       = matrix.trilinos_matrix();
     const Epetra_CrsMatrix &r       = *relaxation;
+    const std::vector<bool> kept_a  = displacement_columns(a);
+    const std::vector<bool> kept_r  = displacement_columns(r);
     unsigned int            longest = 0;
     for (int row = 0; row < a.NumMyRows(); ++row)
       longest = std::max<unsigned int>(longest, a.NumMyEntries(row));
@@ -295,25 +307,25 @@ namespace viscoslide
     std::vector<std::pair<int, double>> entries;
     std::vector<int>                    columns;
     std::vector<double>                 values;
-    const auto                          add_row =
-      [&](const Epetra_CrsMatrix &m, const int g, const double factor) {
-        const int row = m.RowMap().LID(g);
-        int       n;
-        double   *v;
-        int      *c;
-        m.ExtractMyRowView(row, n, v, c);
-        for (int k = 0; k < n; ++k)
-          {
-            const int col = TrilinosWrappers::global_index(m.ColMap(), c[k]);
-            if (relevant_displacement.is_element(col))
-              entries.emplace_back(col, factor * v[k]);
-          }
-      };
+    const auto                          add_row = [&](const Epetra_CrsMatrix  &m,
+                             const std::vector<bool> &kept,
+                             const int                g,
+                             const double             factor) {
+      const int row = m.RowMap().LID(g);
+      int       n;
+      double   *v;
+      int      *c;
+      m.ExtractMyRowView(row, n, v, c);
+      for (int k = 0; k < n; ++k)
+        if (kept[c[k]])
+          entries.emplace_back(TrilinosWrappers::global_index(m.ColMap(), c[k]),
+                               factor * v[k]);
+    };
     for (const types::global_dof_index g : displacement)
       {
         entries.clear();
-        add_row(a, g, 1.);
-        add_row(r, g, -1.);
+        add_row(a, kept_a, g, 1.);
+        add_row(r, kept_r, g, -1.);
         std::sort(entries.begin(), entries.end());
         columns.clear();
         values.clear();

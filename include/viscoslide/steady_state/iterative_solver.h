@@ -105,6 +105,8 @@ namespace viscoslide
     setup_strain_blocks(const TrilinosWrappers::SparseMatrix &matrix);
     void
     setup_displacement_block(const TrilinosWrappers::SparseMatrix &matrix);
+    std::vector<bool>
+    displacement_columns(const Epetra_CrsMatrix &m) const;
     // z_e = D^-1 r_e on the owned strain rows (positions among the owned
     // unknowns), by the sweep.
     void
@@ -121,8 +123,6 @@ namespace viscoslide
     // positions among the owned unknowns.
     std::vector<types::global_dof_index> displacement;
     std::vector<unsigned int>            displacement_position;
-    // Whether a locally relevant unknown is a displacement.
-    IndexSet relevant_displacement;
     // The strain blocks in sweep order (upstream first).
     std::vector<StrainBlock> blocks;
     // The near null space, mode by mode over `displacement`.

@@ -163,7 +163,11 @@ namespace viscoslide
       // dissection in 3D): 24.2, 24.5 and 38.2 kB per unknown at 128 004,
       // 266 304 and 501 390 unknowns, the fit through the first and the
       // last. The iterative solver's matrices, multigrid hierarchy and
-      // Krylov vectors: 17.8 kB per unknown at 266 304.
+      // Krylov vectors: 17.8 kB per unknown at 266 304. With its
+      // displacement block factorized it takes the direct solver's figure,
+      // which overestimates it: 23.2 and 26.4 kB per unknown at 66 771 and
+      // 271 347 (displacement control, no load), against 29.4 and 40.3 for
+      // the direct solver.
       double
       direct_gb_per_unknown(const double unknowns)
       {
@@ -182,7 +186,9 @@ namespace viscoslide
       {
         double radius, cells, unknowns, gigabytes, available;
         bool   direct;
-        bool   counted_all; // false: the count stopped, there are more
+        bool   factorized; // the direct solver, or the iterative one with A~
+                           // factorized
+        bool counted_all;  // false: the count stopped, there are more
       };
 
       FiniteElements3dSize
@@ -219,11 +225,24 @@ namespace viscoslide
         size.counted_all = size.cells <= most_cells;
         size.unknowns    = size.cells * per_cell;
         size.direct      = p.solver.direct_for(size.unknowns);
-        size.gigabytes =
-          size.unknowns * (size.direct ? direct_gb_per_unknown(size.unknowns)
-                                       : iterative_gb_per_unknown);
+        size.factorized =
+          size.direct ||
+          p.solver.displacement_block == Parameters::DisplacementBlock::direct;
+        size.gigabytes = size.unknowns *
+                         (size.factorized ? direct_gb_per_unknown(size.unknowns)
+                                          : iterative_gb_per_unknown);
         return size;
       }
+
+      std::string
+      linear_solver_name(const FiniteElements3dSize &size)
+      {
+        return size.direct ? "the direct linear solver"
+               : size.factorized
+                 ? "the iterative linear solver with A~ factorized"
+                 : "the iterative linear solver";
+      }
+
 
       // Refused before anything is written, with the entries to change.
       void
@@ -235,14 +254,16 @@ namespace viscoslide
                 << "the 3D finite elements about the relaxed contact of this "
                 << "case (radius about " << size.radius << " eps) need "
                 << (size.counted_all ? "about " : "more than ") << size.unknowns
-                << " unknowns (" << size.cells << " cells) and, with the "
-                << (size.direct ? "direct" : "iterative") << " linear solver, "
+                << " unknowns (" << size.cells << " cells) and, with "
+                << linear_solver_name(size) << ", "
                 << (size.counted_all ? "about " : "over ") << size.gigabytes
                 << " GB; the machines of this run have " << size.available
                 << " GB: raise 'Mesh/Finest surface cell' or 'Mesh/Mesh "
                    "grading'"
                 << (size.direct ? ", or set 'Solver/Linear solver' = iterative"
-                                : "")
+                    : size.factorized
+                      ? ", or set 'Solver/Displacement block' = multigrid"
+                      : "")
                 << " (doc/steady_state.md, Memory)";
         require(size.gigabytes <= 0.8 * size.available, message.str());
       }
@@ -431,9 +452,8 @@ namespace viscoslide
           note << std::setprecision(3)
                << "Note: the 3D finite elements about the relaxed contact "
                << "will have about " << size.unknowns << " unknowns and need "
-               << "about " << size.gigabytes << " GB with the "
-               << (size.direct ? "direct" : "iterative")
-               << " linear solver, of " << size.available
+               << "about " << size.gigabytes << " GB with "
+               << linear_solver_name(size) << ", of " << size.available
                << " GB (an estimate before the mesh is built: "
                << "doc/steady_state.md, Memory)";
           p.notes.push_back(note.str());

@@ -268,10 +268,10 @@ namespace viscoslide
         Patterns::Selection(choice_pattern<DisplacementBlock>()),
         "The iterative steady-state solver's inverse of its displacement "
         "block A~: 'multigrid', one V-cycle of algebraic multigrid (ML); "
-        "'direct', a sparse factorization of A~ on one process (KLU), "
-        "exact but serial and slow in 3D: it measures what the V-cycle "
-        "costs in GMRES iterations (doc/steady_state.md, The iterative "
-        "linear solver).");
+        "'direct', a sparse factorization of A~ (MUMPS, on all "
+        "processes): exact, GMRES then needs few iterations at every "
+        "speed, but its memory grows as a factorization's "
+        "(doc/steady_state.md, The iterative linear solver).");
       prm.declare_entry("Newton tolerance",
                         "1e-9",
                         Patterns::Double(),

@@ -359,9 +359,13 @@ namespace viscoslide
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
     list.set("null space: vectors", rigid_body_modes.data());
-    // One level: ML applies its coarse solver, KLU, to A~ itself.
+    // One level: ML applies its coarse solver to A~ itself, MUMPS
+    // factorizing it on all processes.
     if (displacement_block == Parameters::DisplacementBlock::direct)
-      list.set("max levels", 1);
+      {
+        list.set("max levels", 1);
+        list.set("coarse: type", "Amesos-MUMPS");
+      }
     amg =
       std::make_unique<ML_Epetra::MultiLevelPreconditioner>(*block, list, true);
   }

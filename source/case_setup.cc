@@ -164,10 +164,10 @@ namespace viscoslide
       // 266 304 and 501 390 unknowns, the fit through the first and the
       // last. The iterative solver's matrices, multigrid hierarchy and
       // Krylov vectors: 17.8 kB per unknown at 266 304. With its
-      // displacement block factorized it takes the direct solver's figure,
-      // which overestimates it: 23.2 and 26.4 kB per unknown at 66 771 and
-      // 271 347 (displacement control, no load), against 29.4 and 40.3 for
-      // the direct solver.
+      // displacement block factorized it takes the direct solver's figure:
+      // 22.7 and 36.2 kB per unknown at 66 771 and 271 347 unknowns, where
+      // it measured 23.2 and 26.4 (displacement control, no load) and the
+      // direct solver 29.4 and 40.3.
       double
       direct_gb_per_unknown(const double unknowns)
       {

@@ -165,7 +165,7 @@ namespace viscoslide
       // last. The iterative solver's matrices, multigrid hierarchy and
       // Krylov vectors: 17.8 kB per unknown at 266 304. With its
       // displacement block factorized it takes the direct solver's figure:
-      // 22.7 and 36.2 kB per unknown at 66 771 and 271 347 unknowns, where
+      // 22.7 and 36.3 kB per unknown at 66 771 and 271 347 unknowns, where
       // it measured 23.2 and 26.4 (displacement control, no load) and the
       // direct solver 29.4 and 40.3.
       double

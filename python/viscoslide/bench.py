@@ -22,6 +22,7 @@ build/viscoslide, and lets mpirun run as root."""
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -280,7 +281,9 @@ def fem3d(argv):
     iterations per solve, and mu and A_hat at V_hat 1. With the case
     'approach' the sphere is pressed to delta_hat 3 under displacement
     control and slides at V_hat 1e-4 alone (no load step: the iterative
-    solver's Newton iterations there are each a full solve).
+    solver's Newton iterations there are each a full solve). The solvers:
+    direct, iterative, and factorized (the iterative one with its
+    displacement block A~ factorized, Solver/Displacement block = direct).
 
         scripts/bench_fem3d ["meshes"] ["solvers"] ["procs"] [load|approach]"""
     prepare()
@@ -290,6 +293,13 @@ def fem3d(argv):
     case = argv[3] if len(argv) > 3 else 'load'
     if case not in ('load', 'approach'):
         sys.exit(f"bench_fem3d: the case is 'load' or 'approach', not {case!r}")
+    linear = {'direct': {'Solver/Linear solver': 'direct'},
+              'iterative': {'Solver/Linear solver': 'iterative'},
+              'factorized': {'Solver/Linear solver': 'iterative',
+                             'Solver/Displacement block': 'direct'}}
+    for solver in solvers:
+        if solver not in linear:
+            sys.exit(f"bench_fem3d: the solvers are {', '.join(linear)}, not {solver!r}")
     settings = {'Sliding/Sliding speed': '1'} if case == 'load' else {
         'Sliding/Sliding speed': '0.0001', 'Sliding/Control': 'displacement',
         'Loading/Final approach': '3', 'Loading/Target load': None}
@@ -304,8 +314,7 @@ def fem3d(argv):
                 path = prm.override_file(
                     'tests/sphere_fem_hertz.prm', out + '.prm',
                     {'Output/Output directory': out, 'Mesh/Finest surface cell': cell,
-                     'Mesh/Mesh grading': grading, 'Solver/Linear solver': solver,
-                     **settings})
+                     'Mesh/Mesh grading': grading, **linear[solver], **settings})
                 code, wall = timed_run(mpirun(np, path), out + '.log')
                 table = rows(f'{out}/steady_state.csv', False)
                 if code or not table:
@@ -314,11 +323,10 @@ def fem3d(argv):
                 unknowns = max(int(r['n_dofs']) for r in rows(f'{out}/continuation.csv', False))
                 with open(f'{out}/run.json') as f:
                     peak = json.load(f)['peak_memory_gb']['total']
-                its = '-'
-                for line in open(out + '.log'):
-                    if line.strip().startswith('GMRES solves'):
-                        w = line.split()
-                        its = f'{int(w[4]) / max(int(w[2]), 1):.0f}'
+                # the stations print running totals; the last holds all
+                counts = re.findall(r'GMRES solves (\d+)\s+iterations (\d+)',
+                                    open(out + '.log').read())
+                its = f'{int(counts[-1][1]) / int(counts[-1][0]):.0f}' if counts else '-'
                 r = table[-1]
                 print(f"{mesh:<7} {solver:<9} {np:>5} {wall:8.1f} {unknowns:9d} {peak:8.2f} "
                       f"{1e6 * peak / unknowns:10.2f} {its:>9} {r['mu']:9.5g} {r['A_hat']:7.4g}",

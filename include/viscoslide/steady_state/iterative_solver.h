@@ -73,7 +73,9 @@ namespace viscoslide
 
     // x = J^-1 b to a relative 1e-10 of |b|, x's start ignored. A solve
     // that does not converge leaves GMRES's last iterate: Newton's method
-    // judges it by the residual.
+    // judges it by the residual. Within one bulk operator the last A~ is
+    // tried first and rebuilt only when GMRES needs more than twice the
+    // iterations of the last solve with a fresh one (and 20).
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           const TrilinosWrappers::MPI::Vector  &b,
@@ -107,6 +109,13 @@ namespace viscoslide
     setup_displacement_block(const TrilinosWrappers::SparseMatrix &matrix);
     std::vector<bool>
     displacement_columns(const Epetra_CrsMatrix &m) const;
+    // GMRES to 1e-10 of |b| in at most max_steps: its steps, and whether
+    // it converged.
+    std::pair<unsigned int, bool>
+    gmres(const TrilinosWrappers::SparseMatrix &matrix,
+          const TrilinosWrappers::MPI::Vector  &b,
+          TrilinosWrappers::MPI::Vector        &x,
+          unsigned int                          max_steps);
     // z_e = D^-1 r_e on the owned strain rows (positions among the owned
     // unknowns), by the sweep.
     void
@@ -130,10 +139,14 @@ namespace viscoslide
     unsigned int        n_modes = 0;
 
     // sum_K B_K D_K^-1 C_K for the bulk `strain_bulk` (-1: none).
-    std::unique_ptr<Epetra_CrsMatrix>                    relaxation;
-    double                                               strain_bulk    = -1.;
-    double                                               assembled_bulk = 0.;
-    bool                                                 set_up         = false;
+    std::unique_ptr<Epetra_CrsMatrix> relaxation;
+    double                            strain_bulk    = -1.;
+    double                            assembled_bulk = 0.;
+    bool                              set_up         = false;
+    // A~ is that of an earlier Newton matrix of the same bulk operator;
+    // the last solve with a fresh one took fresh_iterations.
+    bool                                                 stale = false;
+    unsigned int                                         fresh_iterations = 0;
     std::unique_ptr<Epetra_Map>                          map;
     std::unique_ptr<Epetra_CrsMatrix>                    block;
     std::unique_ptr<ML_Epetra::MultiLevelPreconditioner> amg;

@@ -430,13 +430,15 @@ namespace viscoslide
       setup(matrix);
     system = &matrix;
     // A stale A~ may cost at most twice the iterations of the last fresh
-    // one (and 20); beyond, A~ is rebuilt and the solve begins again.
-    if (stale &&
-        gmres(matrix, b, x, std::max(20U, 2 * fresh_iterations)).second)
+    // one (and 20); beyond, A~ is rebuilt and the solve begins again. Where
+    // that would reach GMRES's limit, A~ is rebuilt at once.
+    const unsigned int limit       = 1000,
+                       stale_limit = std::max(20U, 2 * fresh_iterations);
+    if (stale && stale_limit < limit && gmres(matrix, b, x, stale_limit).second)
       return;
     if (stale)
       setup(matrix);
-    fresh_iterations = gmres(matrix, b, x, 1000).first;
+    fresh_iterations = gmres(matrix, b, x, limit).first;
   }
 
 

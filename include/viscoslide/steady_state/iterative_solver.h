@@ -75,7 +75,8 @@ namespace viscoslide
     // that does not converge leaves GMRES's last iterate: Newton's method
     // judges it by the residual. Within one bulk operator the last A~ is
     // tried first and rebuilt only when GMRES needs more than twice the
-    // iterations of the last solve with a fresh one (and 20).
+    // iterations of the last solve with a fresh one (and 20), or at once
+    // when that solve took half GMRES's limit of 1000.
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           const TrilinosWrappers::MPI::Vector  &b,

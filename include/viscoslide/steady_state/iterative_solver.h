@@ -17,9 +17,11 @@
 //   terms included, approximated by one V-cycle of smoothed-aggregation
 //   AMG (Trilinos ML) with the rigid-body modes as near null space.
 // The spectrum of J P^-1 is 1 and that of S A~^-1, S = A - B D^-1 C the
-// solid's true displacement operator. What A~ leaves out is the strain's
-// memory over V tau downstream, and the iterations grow where V tau is a
-// cell or more (doc/steady_state.md, "The iterative linear solver").
+// solid's true displacement operator. What A~ leaves out, the strain's
+// memory over V tau downstream, costs little; the iterations grow with
+// speed because the V-cycle approximates A~ ever worse where V tau nears
+// a cell, and at nu near 1/2 it is poor already at rest
+// (doc/steady_state.md, "The iterative linear solver").
 // doc/steady_state.md ("The linear solver") has the design and its
 // measured iteration counts.
 #ifndef viscoslide_steady_state_iterative_solver_h

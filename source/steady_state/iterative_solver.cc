@@ -42,25 +42,19 @@ namespace viscoslide
 
   namespace
   {
-    // The rigid-body modes of the displacement at point p, component c:
-    // the dim translations, then the rotations (one in 2D, three in 3D).
+    // The near null space of the displacement at point p, component c:
+    // the dim translations and the dim^2 linear fields x_j e_c, which hold
+    // the rotations and also the shears. A nearly incompressible solid's
+    // softest smooth errors are shears (divergence-free), which
+    // aggregates of rigid-body modes alone represent poorly.
     template <int dim>
     std::vector<double>
-    rigid_body_values(const Point<dim> &p, const unsigned int c)
+    near_null_space_values(const Point<dim> &p, const unsigned int c)
     {
-      std::vector<double> v(dim == 2 ? 3 : 6, 0.);
+      std::vector<double> v(dim + dim * dim, 0.);
       v[c] = 1.;
-      if constexpr (dim == 2)
-        v[2] = c == 0 ? -p[1] : p[0];
-      else
-        {
-          // rotations about x, y and z: (0, -z, y), (z, 0, -x), (-y, x, 0)
-          const double r[3][3] = {{0., -p[2], p[1]},
-                                  {p[2], 0., -p[0]},
-                                  {-p[1], p[0], 0.}};
-          for (unsigned int k = 0; k < 3; ++k)
-            v[3 + k] = r[k][c];
-        }
+      for (unsigned int j = 0; j < dim; ++j)
+        v[dim + c * dim + j] = p[j];
       return v;
     }
   } // namespace
@@ -76,8 +70,8 @@ namespace viscoslide
     displacement.clear();
     displacement_position.clear();
     blocks.clear();
-    rigid_body_modes.clear();
-    n_modes = dim == 2 ? 3 : 6;
+    near_null_space.clear();
+    n_modes = dim + dim * dim;
 
     // The displacement's support points on a cell: the quadrature points
     // of a formula whose points are the base element's support points.
@@ -111,7 +105,7 @@ namespace viscoslide
                 displacement.push_back(g);
                 displacement_position.push_back(owned.index_within_set(g));
                 const std::vector<double> v =
-                  rigid_body_values(points.quadrature_point(k), c);
+                  near_null_space_values(points.quadrature_point(k), c);
                 for (unsigned int m = 0; m < n_modes; ++m)
                   modes[m].push_back(v[m]);
               }
@@ -133,7 +127,7 @@ namespace viscoslide
     for (auto &c : cells)
       blocks.push_back(std::move(c.second));
     for (const auto &m : modes)
-      rigid_body_modes.insert(rigid_body_modes.end(), m.begin(), m.end());
+      near_null_space.insert(near_null_space.end(), m.begin(), m.end());
 
     std::vector<int> gids(displacement.begin(), displacement.end());
     map = std::make_unique<Epetra_Map>(
@@ -363,7 +357,7 @@ namespace viscoslide
     list.set("PDE equations", dim);
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", static_cast<int>(n_modes));
-    list.set("null space: vectors", rigid_body_modes.data());
+    list.set("null space: vectors", near_null_space.data());
     // One level: ML applies its coarse solver to A~ itself, MUMPS
     // factorizing it on all processes.
     if (displacement_block == Parameters::DisplacementBlock::direct)

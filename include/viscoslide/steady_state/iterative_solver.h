@@ -15,7 +15,8 @@
 //   displacement block with each cell's strain eliminated without its
 //   inflow (exact in the relaxed and the instantaneous limits), surface
 //   terms included, approximated by one V-cycle of smoothed-aggregation
-//   AMG (Trilinos ML) with the rigid-body modes as near null space.
+//   AMG (Trilinos ML) with the translations and the linear displacement
+//   fields (rotations and shears) as near null space.
 // The spectrum of J P^-1 is 1 and that of S A~^-1, S = A - B D^-1 C the
 // solid's true displacement operator. What A~ leaves out, the strain's
 // memory over V tau downstream, costs little; the iterations grow with
@@ -64,7 +65,7 @@ namespace viscoslide
 
     // After every setup: which unknowns are displacements (components 0 to
     // dim - 1 of the element) and which strain cells they belong to, and
-    // the rigid-body modes at the displacements' support points.
+    // the near null space at the displacements' support points.
     void
     reinit(const DoFHandler<dim> &dof_handler);
 
@@ -138,7 +139,7 @@ namespace viscoslide
     // The strain blocks in sweep order (upstream first).
     std::vector<StrainBlock> blocks;
     // The near null space, mode by mode over `displacement`.
-    std::vector<double> rigid_body_modes;
+    std::vector<double> near_null_space;
     unsigned int        n_modes = 0;
 
     // sum_K B_K D_K^-1 C_K for the bulk `strain_bulk` (-1: none).

@@ -169,7 +169,10 @@ namespace viscoslide
     if (with_matrix)
       {
         linear_solver.load_bulk(bulk_matrix, system_matrix, V_hat);
-        iterative_solver.matrix_changed(V_hat);
+        iterative_solver.matrix_changed(V_hat,
+                                        V_hat *
+                                          material.longest_relaxation_time() /
+                                          prm.mesh.finest_cell);
       }
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     x = solution;

@@ -147,12 +147,14 @@ namespace viscoslide
   // and the old A~ is tried first (solve()).
   template <int dim>
   void
-  SteadyIterativeSolver<dim>::matrix_changed(const double bulk)
+  SteadyIterativeSolver<dim>::matrix_changed(const double bulk,
+                                             const double bulk_memory)
   {
     if (bulk != strain_bulk)
       set_up = false;
     stale          = set_up;
     assembled_bulk = bulk;
+    memory         = bulk_memory;
   }
 
 
@@ -346,10 +348,24 @@ namespace viscoslide
     Teuchos::ParameterList list;
     ML_Epetra::SetDefaults("SA", list);
     list.set("ML output", 0);
-    list.set("smoother: type", "Chebyshev");
-    // Four sweeps: at nu = 0.49 a third fewer iterations than two, and
-    // at speeds where the strain's memory matters the difference between
-    // converging and not within the iteration limit.
+    // The smoother. Where the strain's memory reaches a hundredth of a
+    // cell, the strain eliminated cell by cell makes A~ far from
+    // symmetric (at V tau_k an eighth of a cell its symmetric part,
+    // inverted exactly, takes GMRES 278 iterations on A~), and Chebyshev,
+    // whose polynomial assumes a real spectrum, smooths it poorly: there
+    // Gauss-Seidel, damped by 0.6 (undamped, ML's Gauss-Seidel, Jacobi
+    // between processes, stalls on two). Below, A~ is nearly symmetric
+    // and Chebyshev, which does not weaken between processes, costs less
+    // (doc/benchmark.md, Where the iterative solver's iterations go).
+    if (memory >= 0.01)
+      {
+        list.set("smoother: type", "Gauss-Seidel");
+        list.set("smoother: damping factor", 0.6);
+      }
+    else
+      list.set("smoother: type", "Chebyshev");
+    // Four sweeps: at nu = 0.49 fewer iterations than two, at about the
+    // same cost.
     list.set("smoother: sweeps", 4);
     list.set("aggregation: threshold", 0.02);
     list.set("coarse: type", "Amesos-KLU");

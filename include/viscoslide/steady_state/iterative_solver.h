@@ -16,12 +16,14 @@
 //   inflow (exact in the relaxed and the instantaneous limits), surface
 //   terms included, approximated by one V-cycle of smoothed-aggregation
 //   AMG (Trilinos ML) with the translations and the linear displacement
-//   fields (rotations and shears) as near null space.
+//   fields (rotations and shears) as near null space, smoothed by
+//   Chebyshev where A~ is nearly symmetric and by damped Gauss-Seidel
+//   where the strain's memory makes it far from symmetric.
 // The spectrum of J P^-1 is 1 and that of S A~^-1, S = A - B D^-1 C the
 // solid's true displacement operator. What A~ leaves out, the strain's
 // memory over V tau downstream, costs little; the iterations grow with
-// speed because the V-cycle approximates A~ ever worse where V tau nears
-// a cell, and at nu near 1/2 it is poor already at rest
+// speed because the V-cycle approximates A~ worse where V tau nears a
+// cell, and at nu near 1/2 it is slow already at rest
 // (doc/steady_state.md, "The iterative linear solver").
 // doc/steady_state.md ("The linear solver") has the design and its
 // measured iteration counts.
@@ -70,9 +72,11 @@ namespace viscoslide
     reinit(const DoFHandler<dim> &dof_handler);
 
     // The system matrix was assembled anew; `bulk` names its bulk operator
-    // (the speed), on which A~'s strain part depends alone.
+    // (the speed), on which A~'s strain part depends alone, and `memory`
+    // is that operator's longest relaxation length V tau_k over the finest
+    // cell, which chooses the V-cycle's smoother.
     void
-    matrix_changed(double bulk);
+    matrix_changed(double bulk, double memory);
 
     // x = J^-1 b to a relative 1e-10 of |b|, x's start ignored. A solve
     // that does not converge leaves GMRES's last iterate: Newton's method
@@ -145,8 +149,8 @@ namespace viscoslide
     // sum_K B_K D_K^-1 C_K for the bulk `strain_bulk` (-1: none).
     std::unique_ptr<Epetra_CrsMatrix> relaxation;
     double                            strain_bulk    = -1.;
-    double                            assembled_bulk = 0.;
-    bool                              set_up         = false;
+    double                            assembled_bulk = 0., memory = 0.;
+    bool                              set_up = false;
     // A~ is that of an earlier Newton matrix of the same bulk operator;
     // the last solve with a fresh one took fresh_iterations.
     bool                                                 stale = false;

@@ -356,7 +356,8 @@ namespace viscoslide
     // Gauss-Seidel, damped by 0.6 (undamped, ML's Gauss-Seidel, Jacobi
     // between processes, stalls on two). Below, A~ is nearly symmetric
     // and Chebyshev, which does not weaken between processes, costs less
-    // (doc/benchmark.md, Where the iterative solver's iterations go).
+    // (doc/benchmark.md, Damped Gauss-Seidel where A~ is far from
+    // symmetric).
     if (memory >= 0.01)
       {
         list.set("smoother: type", "Gauss-Seidel");

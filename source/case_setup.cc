@@ -188,7 +188,8 @@ namespace viscoslide
         bool   direct;
         bool   factorized; // the direct solver, or the iterative one with A~
                            // factorized
-        bool counted_all;  // false: the count stopped, there are more
+        bool factorized_at_speed; // ... only where V tau_k is long
+        bool counted_all;         // false: the count stopped, there are more
       };
 
       FiniteElements3dSize
@@ -225,9 +226,16 @@ namespace viscoslide
         size.counted_all = size.cells <= most_cells;
         size.unknowns    = size.cells * per_cell;
         size.direct      = p.solver.direct_for(size.unknowns);
+        // The iterative solver factorizes A~ at its fastest speed if at any.
+        const double fastest =
+          *std::max_element(p.sliding.speeds.begin(), p.sliding.speeds.end());
+        const double cells_per_speed =
+          make_solid(p, s).longest_relaxation_time() / s.tau_ref /
+          p.mesh.finest_cell;
         size.factorized =
-          size.direct ||
-          p.solver.displacement_block == Parameters::DisplacementBlock::direct;
+          size.direct || p.solver.factorizes(fastest * cells_per_speed);
+        size.factorized_at_speed =
+          size.factorized && !size.direct && !p.solver.factorizes(0.);
         size.gigabytes = size.unknowns *
                          (size.factorized ? direct_gb_per_unknown(size.unknowns)
                                           : iterative_gb_per_unknown);
@@ -239,7 +247,8 @@ namespace viscoslide
       {
         return size.direct ? "the direct linear solver"
                : size.factorized
-                 ? "the iterative linear solver with A~ factorized"
+                 ? "the iterative linear solver with A~ factorized" +
+                     std::string(size.factorized_at_speed ? " at speed" : "")
                  : "the iterative linear solver";
       }
 
@@ -262,7 +271,11 @@ namespace viscoslide
                    "grading'"
                 << (size.direct ? ", or set 'Solver/Linear solver' = iterative"
                     : size.factorized
-                      ? ", or set 'Solver/Displacement block' = multigrid"
+                      ? ", or set 'Solver/Displacement block' = multigrid" +
+                          std::string(size.factorized_at_speed
+                                        ? " (whose V-cycle may not converge "
+                                          "at the fast speeds)"
+                                        : "")
                       : "")
                 << " (doc/steady_state.md, Memory)";
         require(size.gigabytes <= 0.8 * size.available, message.str());

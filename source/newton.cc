@@ -264,13 +264,16 @@ namespace viscoslide
                         "See Linear solver.");
       prm.declare_entry(
         "Displacement block",
-        "multigrid",
+        "automatic",
         Patterns::Selection(choice_pattern<DisplacementBlock>()),
         "The iterative steady-state solver's inverse of its displacement "
         "block A~: 'multigrid', one V-cycle of algebraic multigrid (ML); "
         "'direct', a sparse factorization of A~ (MUMPS, on all "
         "processes): exact, GMRES then needs few iterations at every "
-        "speed, but its memory grows as a factorization's "
+        "speed, but its memory grows as a factorization's; 'automatic', "
+        "the V-cycle while the slowest arm's relaxation length V tau "
+        "stays below 0.3 finest cells, and the factorization at "
+        "faster speeds and wherever a V-cycle did not converge "
         "(doc/steady_state.md, The iterative linear solver).");
       prm.declare_entry("Newton tolerance",
                         "1e-9",

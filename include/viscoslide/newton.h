@@ -28,15 +28,17 @@ namespace viscoslide
     };
     VISCOSLIDE_CHOICES(LinearSolver, "automatic", "direct", "iterative")
 
-    // How the iterative solver applies the inverse of the displacement
-    // block A~: one multigrid V-cycle, or a sparse factorization (exact,
-    // serial: for measuring what the V-cycle costs in iterations).
+    // How the iterative steady solver applies the inverse of its
+    // displacement block A~: one multigrid V-cycle, a sparse factorization
+    // (exact, its memory a factorization's), or the V-cycle where it
+    // converges and the factorization beyond (Solver::factorizes()).
     enum class DisplacementBlock
     {
+      automatic,
       multigrid,
       direct
     };
-    VISCOSLIDE_CHOICES(DisplacementBlock, "multigrid", "direct")
+    VISCOSLIDE_CHOICES(DisplacementBlock, "automatic", "multigrid", "direct")
 
     // The 'Solver' section: Newton's method and its linear solves.
     struct Solver
@@ -58,6 +60,22 @@ namespace viscoslide
         return linear_solver == LinearSolver::direct ||
                (linear_solver == LinearSolver::automatic &&
                 n <= direct_solver_limit);
+      }
+
+      // Whether the iterative steady solver factorizes A~ for a bulk
+      // operator whose slowest arm's relaxation length V tau_k is `memory`
+      // finest cells. In 3D one V-cycle on A~ converged at a quarter of a
+      // cell (311 to 447 GMRES iterations per solve) and not at 0.375 or
+      // 1.25 (V_hat 3 and 10 on 8-eps cells: A~ is indefinite in the
+      // inflow layer), where the factorization took 54 to 78 and 72 to
+      // 136 (doc/steady_state.md, The iterative linear solver).
+      static constexpr double factorized_memory = 0.3;
+      bool
+      factorizes(const double memory) const
+      {
+        return displacement_block == DisplacementBlock::direct ||
+               (displacement_block == DisplacementBlock::automatic &&
+                memory >= factorized_memory);
       }
 
       static void

@@ -1,5 +1,6 @@
 // SteadyIterativeSolver: GMRES with the block triangular preconditioner of
 // the header, the strain block by a sweep, the displacement block by ML.
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -26,12 +27,12 @@ namespace viscoslide
 {
   template <int dim>
   SteadyIterativeSolver<dim>::SteadyIterativeSolver(
-    TimerOutput                        &timer,
-    MPI_Comm                            comm,
-    const Parameters::DisplacementBlock displacement_block)
+    TimerOutput              &timer,
+    MPI_Comm                  comm,
+    const Parameters::Solver &parameters)
     : timer(timer)
     , comm(comm)
-    , displacement_block(displacement_block)
+    , parameters(parameters)
   {
   }
 
@@ -377,7 +378,11 @@ namespace viscoslide
     list.set("null space: vectors", near_null_space.data());
     // One level: ML applies its coarse solver to A~ itself, MUMPS
     // factorizing it on all processes.
-    if (displacement_block == Parameters::DisplacementBlock::direct)
+    factorized = parameters.factorizes(memory) ||
+                 (parameters.displacement_block ==
+                    Parameters::DisplacementBlock::automatic &&
+                  memory >= failed_memory);
+    if (factorized)
       {
         list.set("max levels", 1);
         list.set("coarse: type", "Amesos-MUMPS");
@@ -449,6 +454,17 @@ namespace viscoslide
       return;
     if (stale)
       setup(matrix);
+    const auto [steps, converged] = gmres(matrix, b, x, limit);
+    fresh_iterations              = steps;
+    if (converged || factorized ||
+        parameters.displacement_block !=
+          Parameters::DisplacementBlock::automatic)
+      return;
+    failed_memory = memory;
+    ConditionalOStream(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      << "        GMRES with one V-cycle on A~ did not converge in " << limit
+      << " iterations: A~ factorized from here on\n";
+    setup(matrix);
     fresh_iterations = gmres(matrix, b, x, limit).first;
   }
 

@@ -61,7 +61,7 @@ namespace viscoslide
     , quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
     , flux_quadrature(std::max(3, prm.sliding.viscous_strain_degree + 2))
     , linear_solver(timer, mpi_communicator)
-    , iterative_solver(timer, mpi_communicator, prm.solver.displacement_block)
+    , iterative_solver(timer, mpi_communicator, prm.solver)
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == first_component<dim>)

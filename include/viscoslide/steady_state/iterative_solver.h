@@ -18,7 +18,8 @@
 //   AMG (Trilinos ML) with the translations and the linear displacement
 //   fields (rotations and shears) as near null space, smoothed by
 //   Chebyshev where A~ is nearly symmetric and by damped Gauss-Seidel
-//   where the strain's memory makes it far from symmetric.
+//   where the strain's memory makes it far from symmetric; or factorized
+//   (Parameters::Solver::factorizes()).
 // The spectrum of J P^-1 is 1 and that of S A~^-1, S = A - B D^-1 C the
 // solid's true displacement operator. What A~ leaves out, the strain's
 // memory over V tau downstream, costs little; the iterations grow with
@@ -60,9 +61,9 @@ namespace viscoslide
   class SteadyIterativeSolver
   {
   public:
-    SteadyIterativeSolver(TimerOutput                  &timer,
-                          MPI_Comm                      comm,
-                          Parameters::DisplacementBlock displacement_block);
+    SteadyIterativeSolver(TimerOutput              &timer,
+                          MPI_Comm                  comm,
+                          const Parameters::Solver &parameters);
     ~SteadyIterativeSolver();
 
     // After every setup: which unknowns are displacements (components 0 to
@@ -74,7 +75,7 @@ namespace viscoslide
     // The system matrix was assembled anew; `bulk` names its bulk operator
     // (the speed), on which A~'s strain part depends alone, and `memory`
     // is that operator's longest relaxation length V tau_k over the finest
-    // cell, which chooses the V-cycle's smoother.
+    // cell, which chooses the V-cycle's smoother or the factorization.
     void
     matrix_changed(double bulk, double memory);
 
@@ -83,7 +84,9 @@ namespace viscoslide
     // judges it by the residual. Within one bulk operator the last A~ is
     // tried first and rebuilt only when GMRES needs more than twice the
     // iterations of the last solve with a fresh one (and 20), or at once
-    // when that solve took half GMRES's limit of 1000.
+    // when that solve took half GMRES's limit of 1000. Under 'automatic'
+    // a V-cycle that does not converge is replaced by the factorization,
+    // for this bulk operator and every one with a longer memory.
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           const TrilinosWrappers::MPI::Vector  &b,
@@ -130,9 +133,9 @@ namespace viscoslide
     sweep(const TrilinosWrappers::MPI::Vector &r,
           TrilinosWrappers::MPI::Vector       &z) const;
 
-    TimerOutput                        &timer;
-    MPI_Comm                            comm;
-    const Parameters::DisplacementBlock displacement_block;
+    TimerOutput              &timer;
+    MPI_Comm                  comm;
+    const Parameters::Solver &parameters;
 
     IndexSet owned;
     // The owned displacement unknowns, node by node (the dim components of
@@ -150,7 +153,11 @@ namespace viscoslide
     std::unique_ptr<Epetra_CrsMatrix> relaxation;
     double                            strain_bulk    = -1.;
     double                            assembled_bulk = 0., memory = 0.;
-    bool                              set_up = false;
+    // Whether A~ is factorized, and the shortest memory at which a V-cycle
+    // did not converge.
+    bool   factorized    = false;
+    double failed_memory = 1e300;
+    bool   set_up        = false;
     // A~ is that of an earlier Newton matrix of the same bulk operator;
     // the last solve with a fresh one took fresh_iterations.
     bool                                                 stale = false;

@@ -14,6 +14,8 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
     scripts/bench_sphere [R_hat]               sphere_curve()
     scripts/bench_fem3d [meshes] [solvers] [procs]
                                                fem3d()
+    scripts/bench_fem3d_curve [procs] [muT] [linear solver]
+                                               fem3d_curve()
     scripts/bench_transient [jobs] [prm ...]   transient_agreement()
 
 Each runs in the checkout (paths are relative to it, as the scripts'
@@ -334,6 +336,70 @@ def fem3d(argv):
     print(f'outputs in {work}')
 
 
+# The FEM-BEM comparison's curve: 11 speeds, two per decade.
+CURVE_SPEEDS = '0.01, 0.0316228, 0.1, 0.316228, 1, 3.16228, 10, 31.6228, 100, 316.228, 1000'
+
+
+def fem3d_curve(argv):
+    """A whole friction curve of the 3D finite elements, approach included:
+    tests/sphere_fem_adhesive.prm (R_hat 100, Lennard-Jones at the Tabor
+    parameter given, default 1, F_hat 1, 4-eps cells, the viscous strain
+    of degree 1) at 11 speeds from 0.01 to 1000, on each process count
+    given (default "2 1") with the linear solver given (default
+    automatic), and the same curve by the 3D boundary elements (0.5-eps
+    grid, 160-eps window) as reference: per run the wall time, the
+    unknowns, the peak memory and GMRES iterations per solve; per speed mu
+    and A_hat of both and their differences.
+
+        scripts/bench_fem3d_curve ["procs"] [Tabor parameter] [linear solver]"""
+    prepare()
+    procs = (argv[0] if argv else '2 1').split()
+    muT = argv[1] if len(argv) > 1 else '1'
+    solver = argv[2] if len(argv) > 2 else 'automatic'
+    work = tempfile.mkdtemp()
+    common = {'Adhesion/Tabor parameter': muT, 'Sliding/Sliding speed': CURVE_SPEEDS,
+              'Solver/Linear solver': None}
+    fem_settings = {**common, 'Sliding/Viscous strain degree': '1',
+                    'Solver/Linear solver': solver}
+    bem_settings = {**common, 'Sliding/Solver': 'boundary-element',
+                    'Sliding/Viscous strain degree': None, 'Geometry/Domain width': 160,
+                    'Mesh/Finest surface cell': 1, 'Mesh/Mesh grading': None}
+    if muT != '1':  # the attraction switched on deeper (doc/steady_state.md)
+        fem_settings['Loading/Final approach'] = '6'
+    runs = [('bem', 1, bem_settings)] + [(f'fem_np{np}', np, fem_settings) for np in procs]
+    tables_of = {}
+    print(f"{'run':<9} {'wall_s':>8} {'unknowns':>9} {'peak_GB':>8} {'speeds':>6} "
+          f"{'its/solve':>9}", flush=True)
+    for name, np, settings in runs:
+        out = f'{work}/{name}'
+        path = prm.override_file('tests/sphere_fem_adhesive.prm', out + '.prm',
+                                 {'Output/Output directory': out, **settings})
+        code, wall = timed_run(mpirun(np, path), out + '.log')
+        table = rows(f'{out}/steady_state.csv', False)
+        if code or not table:
+            print(f'{name:<9} failed: see {out}.log', flush=True)
+            continue
+        tables_of[name] = table
+        unknowns = max((int(r['n_dofs']) for r in rows(f'{out}/continuation.csv', False)
+                        if 'n_dofs' in r), default=0)
+        with open(f'{out}/run.json') as f:
+            peak = json.load(f)['peak_memory_gb']['total']
+        counts = re.findall(r'GMRES solves (\d+)\s+iterations (\d+)', open(out + '.log').read())
+        its = f'{int(counts[-1][1]) / int(counts[-1][0]):.0f}' if counts else '-'
+        print(f'{name:<9} {wall:8.1f} {unknowns:9d} {peak:8.2f} {len(table):6d} {its:>9}',
+              flush=True)
+    fem = next((t for n, t in tables_of.items() if n.startswith('fem')), None)
+    if 'bem' not in tables_of or fem is None:
+        sys.exit(f'bench_fem3d_curve: no curve to compare; outputs in {work}')
+    print(f"{'V_hat':>8} {'mu FEM':>10} {'mu BEM':>10} {'diff':>7} {'A_hat FEM':>9} "
+          f"{'A_hat BEM':>9} {'diff':>7} {'mu_energy/mu-1':>14}")
+    for f, b in zip(fem, tables_of['bem']):
+        print(f"{f['V_hat']:8.4g} {f['mu']:10.5g} {b['mu']:10.5g} {f['mu'] / b['mu'] - 1:+7.2%} "
+              f"{f['A_hat']:9.5g} {b['A_hat']:9.5g} {f['A_hat'] / b['A_hat'] - 1:+7.2%} "
+              f"{f['mu_energy'] / f['mu'] - 1:+14.2%}")
+    print(f'outputs in {work}')
+
+
 # The transient's resolved cases (tests/cross_validation_*.prm): V_hat 0.1
 # to 1000 at R_hat 400, muT 6.08, each on the mesh, step and window that
 # resolve it, under displacement and force control; the longest first, so
@@ -394,7 +460,8 @@ def transient_agreement(argv):
 
 
 COMMANDS = {'approach': approach, 'sliding': sliding, 'curve': curve, 'steady_curve': steady_curve,
-            'sphere_curve': sphere_curve, 'fem3d': fem3d, 'transient_agreement': transient_agreement}
+            'sphere_curve': sphere_curve, 'fem3d': fem3d, 'fem3d_curve': fem3d_curve,
+            'transient_agreement': transient_agreement}
 
 
 def main(argv=None):

@@ -474,8 +474,9 @@ namespace viscoslide
             "Warning: the 3D finite elements are verified on coarse meshes "
             "only (doc/steady_state.md, In three dimensions): on 4-eps "
             "cells their friction is within 3.4 % of the boundary "
-            "elements' at V_hat 0.01 to 100 without adhesion, 4 to 7 % at "
-            "Tabor parameter 1. Use 'Sliding/Solver' = boundary-element "
+            "elements' at V_hat 0.01 to 100 without adhesion, within 7.2 % "
+            "at Tabor parameter 1 (V_hat 0.01 to 1000, low). Use "
+            "'Sliding/Solver' = boundary-element "
             "for the friction, and refine 'Mesh/Finest surface cell' to "
             "see whether a case is converged");
         }

@@ -476,9 +476,9 @@ namespace viscoslide
             "cells their friction is within 3.4 % of the boundary "
             "elements' at V_hat 0.01 to 100 without adhesion, within 7.2 % "
             "at Tabor parameter 1 (V_hat 0.01 to 1000, low). Use "
-            "'Sliding/Solver' = boundary-element "
-            "for the friction, and refine 'Mesh/Finest surface cell' to "
-            "see whether a case is converged");
+            "'Sliding/Solver' = boundary-element for the friction, and "
+            "refine 'Mesh/Finest surface cell' to see whether a case is "
+            "converged");
         }
       // The cohesive zone of a crack under the law's peak stress: about
       // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.

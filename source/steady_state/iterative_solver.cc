@@ -378,10 +378,7 @@ namespace viscoslide
     list.set("null space: vectors", near_null_space.data());
     // One level: ML applies its coarse solver to A~ itself, MUMPS
     // factorizing it on all processes.
-    factorized = parameters.factorizes(memory) ||
-                 (parameters.displacement_block ==
-                    Parameters::DisplacementBlock::automatic &&
-                  memory >= failed_memory);
+    factorized = parameters.factorizes(memory) || memory >= failed_memory;
     if (factorized)
       {
         list.set("max levels", 1);

@@ -66,8 +66,8 @@ namespace viscoslide
       // operator whose slowest arm's relaxation length V tau_k is `memory`
       // finest cells. In 3D one V-cycle on A~ converged at a quarter of a
       // cell (311 to 447 GMRES iterations per solve) and not at 0.375 or
-      // 1.25 (V_hat 3 and 10 on 8-eps cells: A~ is indefinite in the
-      // inflow layer), where the factorization took 54 to 78 and 72 to
+      // 1.25 (V_hat 3 and 10 on 8-eps cells; at 10 A~ is indefinite in the
+      // inflow layer), where the factorization took 40 to 78 and 72 to
       // 136 (doc/steady_state.md, The iterative linear solver).
       static constexpr double factorized_memory = 0.3;
       bool

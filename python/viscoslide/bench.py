@@ -274,6 +274,20 @@ def sphere_curve(argv):
     print(f'output in {work}/out')
 
 
+def run_costs(out):
+    """A finished run's (largest unknowns, peak memory summed over the
+    processes in GB, GMRES iterations per solve or '-'), from its output
+    folder `out` and its log `out`.log."""
+    unknowns = max((int(r['n_dofs']) for r in rows(f'{out}/continuation.csv', False)
+                    if 'n_dofs' in r), default=0)
+    with open(f'{out}/run.json') as f:
+        peak = json.load(f)['peak_memory_gb']['total']
+    # the stations print running totals; the last holds all
+    counts = re.findall(r'GMRES solves (\d+)\s+iterations (\d+)', open(out + '.log').read())
+    its = f'{int(counts[-1][1]) / int(counts[-1][0]):.0f}' if counts else '-'
+    return unknowns, peak, its
+
+
 def fem3d(argv):
     """The 3D finite elements' cost against mesh size, linear solver and
     process count: tests/sphere_fem_hertz.prm (R_hat 100, repulsive, F_hat
@@ -322,13 +336,7 @@ def fem3d(argv):
                 if code or not table:
                     print(f'{mesh:<7} {solver:<9} {np:>5} failed: see {out}.log', flush=True)
                     continue
-                unknowns = max(int(r['n_dofs']) for r in rows(f'{out}/continuation.csv', False))
-                with open(f'{out}/run.json') as f:
-                    peak = json.load(f)['peak_memory_gb']['total']
-                # the stations print running totals; the last holds all
-                counts = re.findall(r'GMRES solves (\d+)\s+iterations (\d+)',
-                                    open(out + '.log').read())
-                its = f'{int(counts[-1][1]) / int(counts[-1][0]):.0f}' if counts else '-'
+                unknowns, peak, its = run_costs(out)
                 r = table[-1]
                 print(f"{mesh:<7} {solver:<9} {np:>5} {wall:8.1f} {unknowns:9d} {peak:8.2f} "
                       f"{1e6 * peak / unknowns:10.2f} {its:>9} {r['mu']:9.5g} {r['A_hat']:7.4g}",
@@ -357,13 +365,13 @@ def fem3d_curve(argv):
     muT = argv[1] if len(argv) > 1 else '1'
     solver = argv[2] if len(argv) > 2 else 'automatic'
     work = tempfile.mkdtemp()
-    common = {'Adhesion/Tabor parameter': muT, 'Sliding/Sliding speed': CURVE_SPEEDS,
-              'Solver/Linear solver': None}
+    common = {'Adhesion/Tabor parameter': muT, 'Sliding/Sliding speed': CURVE_SPEEDS}
     fem_settings = {**common, 'Sliding/Viscous strain degree': '1',
                     'Solver/Linear solver': solver}
     bem_settings = {**common, 'Sliding/Solver': 'boundary-element',
                     'Sliding/Viscous strain degree': None, 'Geometry/Domain width': 160,
-                    'Mesh/Finest surface cell': 1, 'Mesh/Mesh grading': None}
+                    'Mesh/Finest surface cell': 1, 'Mesh/Mesh grading': None,
+                    'Solver/Linear solver': None}
     if muT != '1':  # the attraction switched on deeper (doc/steady_state.md)
         fem_settings['Loading/Final approach'] = '6'
     runs = [('bem', 1, bem_settings)] + [(f'fem_np{np}', np, fem_settings) for np in procs]
@@ -380,12 +388,7 @@ def fem3d_curve(argv):
             print(f'{name:<9} failed: see {out}.log', flush=True)
             continue
         tables_of[name] = table
-        unknowns = max((int(r['n_dofs']) for r in rows(f'{out}/continuation.csv', False)
-                        if 'n_dofs' in r), default=0)
-        with open(f'{out}/run.json') as f:
-            peak = json.load(f)['peak_memory_gb']['total']
-        counts = re.findall(r'GMRES solves (\d+)\s+iterations (\d+)', open(out + '.log').read())
-        its = f'{int(counts[-1][1]) / int(counts[-1][0]):.0f}' if counts else '-'
+        unknowns, peak, its = run_costs(out)
         print(f'{name:<9} {wall:8.1f} {unknowns:9d} {peak:8.2f} {len(table):6d} {its:>9}',
               flush=True)
     fem = next((t for n, t in tables_of.items() if n.startswith('fem')), None)

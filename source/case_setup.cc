@@ -175,6 +175,14 @@ namespace viscoslide
       }
       constexpr double iterative_gb_per_unknown = 19e-6;
 
+      // The most unknowns whose direct factorization fits in `gigabytes`:
+      // n direct_gb_per_unknown(n) = gigabytes, solved for n.
+      double
+      most_unknowns_factorized(const double gigabytes)
+      {
+        return std::pow(gigabytes / 26e-6 * std::cbrt(1e5), 0.75);
+      }
+
       // The size of the 3D finite elements with the mesh about the largest
       // contact of the case, the relaxed one at the Target load (JKR's with
       // an adhesive law, Hertz's without; under displacement control Hertz's
@@ -282,6 +290,38 @@ namespace viscoslide
       }
 
     } // namespace
+
+
+    void
+    fit_linear_solver_to_memory(AllParameters &p)
+    {
+      if (p.geometry.dimension != 3 || boundary_elements_only(p))
+        return;
+      if (p.solver.linear_solver == LinearSolver::automatic)
+        {
+          // The direct solver only while its factors fit, at every solve
+          // of the run (Solver::direct_for); say so where this case needs
+          // the iterative one for it.
+          const FiniteElements3dSize before = finite_elements_3d_size(p);
+          const auto                 most   = static_cast<unsigned int>(
+            most_unknowns_factorized(0.8 * before.available));
+          p.solver.direct_solver_limit =
+            std::min(p.solver.direct_solver_limit, most);
+          if (before.direct && !p.solver.direct_for(before.unknowns))
+            {
+              std::ostringstream note;
+              note << std::setprecision(3)
+                   << "Note: 'Solver/Linear solver' = automatic takes the "
+                   << "iterative linear solver for this case: the direct "
+                   << "one's factors would need about " << before.gigabytes
+                   << " GB of the " << before.available
+                   << " GB, and fit up to about " << double(most)
+                   << " unknowns";
+              p.notes.push_back(note.str());
+            }
+        }
+      check_finite_elements_3d_fit(p);
+    }
 
 
     namespace
@@ -734,8 +774,6 @@ namespace viscoslide
               "'Geometry/Domain height' is the depth of the 3D finite "
               "elements' block; the boundary elements' half-space is "
               "infinite: remove it");
-      if (p.geometry.dimension == 3 && !boundary_elements_only(p))
-        check_finite_elements_3d_fit(p);
       if (p.sliding.solver == SlidingSolver::boundary_element)
         {
           require(p.sliding.control != Control::spring,

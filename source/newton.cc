@@ -1,45 +1,13 @@
 #include <deal.II/lac/solver_control.h>
 
+#include <viscoslide/heartbeat.h>
 #include <viscoslide/newton.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace viscoslide
 {
-  namespace
-  {
-    // A line at least every 10 s while one solve runs long (a large 3D
-    // grid spends minutes in one step), so that a user sees it progress.
-    class Heartbeat
-    {
-    public:
-      bool
-      due()
-      {
-        const auto now = std::chrono::steady_clock::now();
-        if (now - last < std::chrono::seconds(10))
-          return false;
-        last = now;
-        return true;
-      }
-      double
-      seconds() const
-      {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             start)
-          .count();
-      }
-
-    private:
-      std::chrono::steady_clock::time_point start =
-                                              std::chrono::steady_clock::now(),
-                                            last = start;
-    };
-  } // namespace
-
-
   int
   newton(const NewtonProblem &p,
          const unsigned int   max_iterations,

@@ -40,6 +40,7 @@ namespace viscoslide
       solver.verbose = output.verbosity == Verbosity::verbose;
       apply_units(*this);
       CaseSetup::check_consistency(*this);
+      CaseSetup::fit_linear_solver_to_memory(*this);
       CaseSetup::fit_block_to_wake(*this);
       CaseSetup::check_mesh_can_hold_case(*this);
       CaseSetup::warn_about_accuracy(*this);

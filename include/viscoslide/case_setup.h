@@ -21,6 +21,12 @@ namespace viscoslide
     void
     check_consistency(const Parameters::AllParameters &p);
 
+    // In 3D, 'Solver/Linear solver' = automatic keeps the direct solver
+    // only up to the unknowns whose factors fit the machines' memory; then
+    // refuses a finite-element case that fits with neither solver.
+    void
+    fit_linear_solver_to_memory(Parameters::AllParameters &p);
+
     // Widens (and deepens) the block to hold the wake of the fastest speed
     // where the control allows it; says so in p.notes.
     void

@@ -354,8 +354,9 @@ def fem3d_curve(argv):
     parameter given, default 1, F_hat 1, 4-eps cells, the viscous strain
     of degree 1) at 11 speeds from 0.01 to 1000, on each process count
     given (default "2 1") with the linear solver given (default
-    automatic), and the same curve by the 3D boundary elements (0.5-eps
-    grid, 160-eps window) as reference: per run the wall time, the
+    automatic), and the same curve by the 3D boundary elements (0.25-eps
+    grid, within 0.15 % of their extrapolated values: scripts/convergence
+    sphere_fem; 160-eps window) as reference: per run the wall time, the
     unknowns, the peak memory and GMRES iterations per solve; per speed mu
     and A_hat of both and their differences.
 
@@ -370,7 +371,7 @@ def fem3d_curve(argv):
                     'Solver/Linear solver': solver}
     bem_settings = {**common, 'Sliding/Solver': 'boundary-element',
                     'Sliding/Viscous strain degree': None, 'Geometry/Domain width': 160,
-                    'Mesh/Finest surface cell': 1, 'Mesh/Mesh grading': None,
+                    'Mesh/Finest surface cell': 0.5, 'Mesh/Mesh grading': None,
                     'Solver/Linear solver': None}
     if muT != '1':  # the attraction switched on deeper (doc/steady_state.md)
         fem_settings['Loading/Final approach'] = '6'

@@ -4,7 +4,7 @@ the error of mu and L_hat at three mesh levels, the differences between
 levels and the observed order, from which the tests' tolerances are argued
 (doc/tests.md).
 
-    scripts/convergence [hunter|adhesive|adhesive_muT1|sphere|dissipation|all]
+    scripts/convergence [hunter|adhesive|adhesive_muT1|sphere|sphere_fem|dissipation|all]
 
 A level halves every cell: the finest surface cell and the grading
 (cell size per distance from the contact edges) together. Each study
@@ -28,6 +28,16 @@ difference of each grid from Richardson's value, extrapolated from the
 three at their observed order, the change with the window, and the
 energy balance mu_energy/mu - 1 per grid.
 
+`sphere_fem` measures the 3D finite elements against the 3D boundary
+elements: the adhesive sphere of tests/sphere_fem_adhesive.prm (R_hat 100,
+Tabor parameter 1, F_hat 1) at V_hat 0.01 and 0.316, the boundary
+elements on grids of 2, 1, 0.5 and 0.25 eps (one process) and the finite
+elements at the levels of SPHERE_FEM (two processes; the 2-eps level holds
+half a million unknowns and takes about 40 minutes). Printed per speed:
+mu and A_hat of each grid, Richardson's value from the last three, and
+each finite-element level's difference from it; the energy balance per
+level.
+
 `dissipation` has no reference curve either: where Fig. 5's steady states
 (parameter_files/fig05_dissipation_maps.prm, V_hat 1 and 50) dissipate,
 at the levels (finest cell, grading) of DISSIPATION: the first three
@@ -46,7 +56,7 @@ import tempfile
 import time
 
 from . import prm, tables
-from .bench import ROOT, VISCOSLIDE, prepare
+from .bench import ROOT, VISCOSLIDE, mpirun, prepare
 
 
 # name: (input, reference file, speeds, levels as (finest cell, grading),
@@ -70,12 +80,20 @@ STUDIES = {
 SPHERE = ('parameter_files/sphere_friction.prm', ['1', '10', '100'], [2, 1, 0.5], 240)
 
 
+# The 3D finite elements' study: the adhesive sphere (R_hat 100, Tabor
+# parameter 1, F_hat 1) at two speeds, the finite elements at the levels
+# (finest surface cell, grading) and the boundary elements on grids of half
+# the finest cells given, the last three extrapolated as the reference.
+SPHERE_FEM = ('tests/sphere_fem_adhesive.prm', ['0.01', '0.316227766'],
+              [(4, 1), (2, 1), (4, 0.5)], [4, 2, 1, 0.5])
+
+
 # Fig. 5's study: its input and the levels (finest surface cell, grading).
 DISSIPATION = ('parameter_files/fig05_dissipation_maps.prm',
                [(2, 0.5), (1, 0.25), (0.5, 0.125), (1, 0.0625)])
 
 
-def run_level(viscoslide, source, work, name, speeds, cell, grading, other):
+def run_level(viscoslide, source, work, name, speeds, cell, grading, other, procs=1):
     """viscoslide on source at one mesh level, by the finite elements
     unless `other` names another solver: the rows of its
     steady_state.csv. With VISCOSLIDE_CHECK_ONLY set (a check run by hand
@@ -90,7 +108,8 @@ def run_level(viscoslide, source, work, name, speeds, cell, grading, other):
         'Mesh/Finest surface cell': cell, 'Mesh/Mesh grading': grading, **other})
     start, last = time.time(), 0.
     with open(out + '.log', 'w') as log:
-        p = subprocess.Popen([viscoslide, path], stdout=subprocess.PIPE,
+        command = [viscoslide, path] if procs == 1 else mpirun(procs, path)
+        p = subprocess.Popen(command, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True)
         for line in p.stdout:
             log.write(line)
@@ -196,6 +215,53 @@ def sphere_study(work):
         print('    balance ' + ', '.join(f'{b:+.3e}' for b in found[V, 'balance']))
 
 
+def measure_sphere_fem(work, viscoslide=VISCOSLIDE, root=ROOT):
+    """The 3D finite elements' study: {(V_hat, quantity): values} with
+    quantity mu, A_hat and balance per FEM level, and bem_mu, bem_A_hat per
+    boundary-element grid."""
+    source, speeds, levels, cells = SPHERE_FEM
+    path = os.path.join(root, source)
+    bem = {'Sliding/Solver': 'boundary-element', 'Sliding/Viscous strain degree': None,
+           'Geometry/Domain width': 160, 'Solver/Linear solver': None}
+    grids = [run_level(viscoslide, path, work, f'sphere_fem_grid{k}', speeds, cell, None, bem)
+             for k, cell in enumerate(cells)]
+    fem = {'Sliding/Viscous strain degree': 1, 'Solver/Linear solver': None}
+    results = [run_level(viscoslide, path, work, f'sphere_fem_level{k}', speeds, cell,
+                         grading, fem, procs=2)
+               for k, (cell, grading) in enumerate(levels)]
+    found = {}
+    for i, v in enumerate(speeds):
+        V = float(v)
+        for quantity in ('mu', 'A_hat'):
+            found[V, quantity] = [r[i][quantity] for r in results]
+            found[V, 'bem_' + quantity] = [g[i][quantity] for g in grids]
+        found[V, 'balance'] = [r[i]['mu_energy'] / r[i]['mu'] - 1 for r in results]
+    return found
+
+
+def sphere_fem_study(work):
+    source, speeds, levels, cells = SPHERE_FEM
+    found = measure_sphere_fem(work)
+    print(f'sphere_fem: {source}, finite elements at (finest cell, grading) {levels} on '
+          f'two processes, boundary elements on grids of '
+          f'{", ".join(f"{c / 2:g}" for c in cells)} eps')
+    for v in speeds:
+        V = float(v)
+        print(f'  V_hat {V:g}')
+        for quantity in ('mu', 'A_hat'):
+            grid = found[V, 'bem_' + quantity]
+            best = extrapolated(grid[-3:])
+            for cell, value in zip(cells, grid):
+                print(f'    {quantity:<6} BEM grid {cell / 2:<5g} {value:.6g}  '
+                      f'from extrapolated {value / best - 1:+.3e}')
+            print(f'    {quantity:<6} BEM observed order {order(grid[-3:]):.2f}, '
+                  f'extrapolated {best:.6g}')
+            for (cell, grading), value in zip(levels, found[V, quantity]):
+                print(f'    {quantity:<6} FEM cell {cell:<4g} grading {grading:<4g} {value:.6g}  '
+                      f'from extrapolated BEM {value / best - 1:+.3e}')
+        print('    FEM balance ' + ', '.join(f'{b:+.3e}' for b in found[V, 'balance']))
+
+
 SHARES = ('surface', 'trailing', 'bulk_under_contact')
 
 
@@ -231,7 +297,8 @@ def dissipation_study(work):
 
 
 # The studies without a reference curve.
-OWN = {'sphere': sphere_study, 'dissipation': dissipation_study}
+OWN = {'sphere': sphere_study, 'sphere_fem': sphere_fem_study,
+       'dissipation': dissipation_study}
 
 
 def main(argv):

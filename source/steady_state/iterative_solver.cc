@@ -11,6 +11,8 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
+#include <viscoslide/heartbeat.h>
+#include <viscoslide/output.h>
 #include <viscoslide/steady_state/iterative_solver.h>
 
 #include <EpetraExt_MatrixMatrix.h>
@@ -21,6 +23,7 @@
 #include <ml_MultiLevelPreconditioner.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace viscoslide
@@ -467,6 +470,43 @@ namespace viscoslide
 
 
   template <int dim>
+  void
+  SteadyIterativeSolver<dim>::report_progress(
+    SolverGMRES<TrilinosWrappers::MPI::Vector> &solver,
+    const SolverControl                        &control) const
+  {
+    // Every 10 s: the residual against the target, and the time left at
+    // the mean rate of decrease so far.
+    solver.connect([this, &control, heartbeat = Heartbeat(), first = -1.](
+                     const unsigned int step,
+                     const double       residual,
+                     const TrilinosWrappers::MPI::Vector &) mutable {
+      if (first < 0)
+        first = residual;
+      if (step > 0 && heartbeat.due())
+        {
+          const double per_step = heartbeat.seconds() / step,
+                       rate     = std::log(residual / first) / step,
+                       at_limit = (control.max_steps() - step) * per_step,
+                       left =
+                         rate < 0
+                           ? std::min(std::log(control.tolerance() / residual) /
+                                        rate * per_step,
+                                      at_limit)
+                           : at_limit;
+          ConditionalOStream(std::cout,
+                             Utilities::MPI::this_mpi_process(comm) == 0)
+            << "        GMRES " << step << ": residual " << residual
+            << " (target " << control.tolerance() << "), "
+            << format_duration(heartbeat.seconds()) << " in this solve, ~"
+            << format_duration(left) << " left" << std::endl;
+        }
+      return SolverControl::success; // leaves the decision to `control`
+    });
+  }
+
+
+  template <int dim>
   std::pair<unsigned int, bool>
   SteadyIterativeSolver<dim>::gmres(
     const TrilinosWrappers::SparseMatrix &matrix,
@@ -479,6 +519,7 @@ namespace viscoslide
     using Solver = SolverGMRES<TrilinosWrappers::MPI::Vector>;
     Solver::AdditionalData data(100, true);
     Solver                 solver(control, data);
+    report_progress(solver, control);
     x              = 0.;
     bool converged = true;
     try

@@ -38,6 +38,8 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -120,6 +122,10 @@ namespace viscoslide
     setup_displacement_block(const TrilinosWrappers::SparseMatrix &matrix);
     std::vector<bool>
     displacement_columns(const Epetra_CrsMatrix &m) const;
+    // A line every 10 s of a long solve: its residual and the time left.
+    void
+    report_progress(SolverGMRES<TrilinosWrappers::MPI::Vector> &solver,
+                    const SolverControl                        &control) const;
     // GMRES to 1e-10 of |b| in at most max_steps: its steps, and whether
     // it converged.
     std::pair<unsigned int, bool>

@@ -168,10 +168,11 @@ namespace viscoslide
       // 22.7 and 36.3 kB per unknown at 66 771 and 271 347 unknowns, where
       // it measured 23.2 and 26.4 (displacement control, no load) and the
       // direct solver 29.4 and 40.3.
+      constexpr double direct_gb_per_unknown_at_1e5 = 26e-6;
       double
       direct_gb_per_unknown(const double unknowns)
       {
-        return 26e-6 * std::cbrt(unknowns / 1e5);
+        return direct_gb_per_unknown_at_1e5 * std::cbrt(unknowns / 1e5);
       }
       constexpr double iterative_gb_per_unknown = 19e-6;
 
@@ -180,7 +181,9 @@ namespace viscoslide
       double
       most_unknowns_factorized(const double gigabytes)
       {
-        return std::pow(gigabytes / 26e-6 * std::cbrt(1e5), 0.75);
+        return std::pow(gigabytes / direct_gb_per_unknown_at_1e5 *
+                          std::cbrt(1e5),
+                        0.75);
       }
 
       // The size of the 3D finite elements with the mesh about the largest
@@ -514,11 +517,12 @@ namespace viscoslide
             "Warning: the 3D finite elements are verified on coarse meshes "
             "only (doc/steady_state.md, In three dimensions): on 4-eps "
             "cells their friction is within 3.4 % of the boundary "
-            "elements' at V_hat 0.01 to 100 without adhesion, within 7.2 % "
-            "at Tabor parameter 1 (V_hat 0.01 to 1000, low). Use "
+            "elements' at V_hat 0.01 to 100 without adhesion, within 7.5 % "
+            "at Tabor parameter 1 (V_hat 0.01 to 1000, low; the error "
+            "halves with the cells at the contact's edge). Use "
             "'Sliding/Solver' = boundary-element for the friction, and "
-            "refine 'Mesh/Finest surface cell' to see whether a case is "
-            "converged");
+            "refine 'Mesh/Finest surface cell' and 'Mesh/Mesh grading' to "
+            "see whether a case is converged");
         }
       // The cohesive zone of a crack under the law's peak stress: about
       // (pi/8) E* dgamma / sigma_max^2, on the softer modulus.

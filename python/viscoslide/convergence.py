@@ -56,7 +56,7 @@ import tempfile
 import time
 
 from . import prm, tables
-from .bench import ROOT, VISCOSLIDE, mpirun, prepare
+from .bench import ROOT, VISCOSLIDE, prepare
 
 
 # name: (input, reference file, speeds, levels as (finest cell, grading),
@@ -93,7 +93,8 @@ DISSIPATION = ('parameter_files/fig05_dissipation_maps.prm',
                [(2, 0.5), (1, 0.25), (0.5, 0.125), (1, 0.0625)])
 
 
-def run_level(viscoslide, source, work, name, speeds, cell, grading, other, procs=1):
+def run_level(viscoslide, source, work, name, speeds, cell, grading, other, procs=1,
+              mpiexec='mpirun'):
     """viscoslide on source at one mesh level, by the finite elements
     unless `other` names another solver: the rows of its
     steady_state.csv. With VISCOSLIDE_CHECK_ONLY set (a check run by hand
@@ -108,7 +109,7 @@ def run_level(viscoslide, source, work, name, speeds, cell, grading, other, proc
         'Mesh/Finest surface cell': cell, 'Mesh/Mesh grading': grading, **other})
     start, last = time.time(), 0.
     with open(out + '.log', 'w') as log:
-        command = [viscoslide, path] if procs == 1 else mpirun(procs, path)
+        command = [mpiexec, '-np', str(procs)] * (procs > 1) + [viscoslide, path]
         p = subprocess.Popen(command, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True)
         for line in p.stdout:
@@ -215,11 +216,14 @@ def sphere_study(work):
         print('    balance ' + ', '.join(f'{b:+.3e}' for b in found[V, 'balance']))
 
 
-def measure_sphere_fem(work, viscoslide=VISCOSLIDE, root=ROOT):
+def measure_sphere_fem(work, viscoslide=VISCOSLIDE, root=ROOT, levels=None, cells=None,
+                       mpiexec='mpirun'):
     """The 3D finite elements' study: {(V_hat, quantity): values} with
     quantity mu, A_hat and balance per FEM level, and bem_mu, bem_A_hat per
-    boundary-element grid."""
-    source, speeds, levels, cells = SPHERE_FEM
+    boundary-element grid; the levels and grids SPHERE_FEM's unless
+    given."""
+    source, speeds, all_levels, all_cells = SPHERE_FEM
+    levels, cells = levels or all_levels, cells or all_cells
     path = os.path.join(root, source)
     bem = {'Sliding/Solver': 'boundary-element', 'Sliding/Viscous strain degree': None,
            'Geometry/Domain width': 160, 'Solver/Linear solver': None}
@@ -227,7 +231,7 @@ def measure_sphere_fem(work, viscoslide=VISCOSLIDE, root=ROOT):
              for k, cell in enumerate(cells)]
     fem = {'Sliding/Viscous strain degree': 1, 'Solver/Linear solver': None}
     results = [run_level(viscoslide, path, work, f'sphere_fem_level{k}', speeds, cell,
-                         grading, fem, procs=2)
+                         grading, fem, procs=2, mpiexec=mpiexec)
                for k, (cell, grading) in enumerate(levels)]
     found = {}
     for i, v in enumerate(speeds):

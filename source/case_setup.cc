@@ -306,10 +306,9 @@ namespace viscoslide
           // of the run (Solver::direct_for); say so where this case needs
           // the iterative one for it.
           const FiniteElements3dSize before = finite_elements_3d_size(p);
-          const auto                 most   = static_cast<unsigned int>(
-            most_unknowns_factorized(0.8 * before.available));
-          p.solver.direct_solver_limit =
-            std::min(p.solver.direct_solver_limit, most);
+          const double most = most_unknowns_factorized(0.8 * before.available);
+          p.solver.direct_solver_limit = static_cast<unsigned int>(
+            std::min<double>(p.solver.direct_solver_limit, most));
           if (before.direct && !p.solver.direct_for(before.unknowns))
             {
               std::ostringstream note;
@@ -318,8 +317,7 @@ namespace viscoslide
                    << "iterative linear solver for this case: the direct "
                    << "one's factors would need about " << before.gigabytes
                    << " GB of the " << before.available
-                   << " GB, and fit up to about " << double(most)
-                   << " unknowns";
+                   << " GB, and fit up to about " << most << " unknowns";
               p.notes.push_back(note.str());
             }
         }

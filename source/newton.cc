@@ -224,8 +224,10 @@ namespace viscoslide
                         "in the steady-state solver with the viscous strain "
                         "swept in the flow direction (doc/steady_state.md, "
                         "The iterative linear solver). 'automatic': direct "
-                        "up to Direct solver limit unknowns, iterative "
-                        "above; the 2D steady state always direct.");
+                        "up to Direct solver limit unknowns (in 3D also "
+                        "only while its factors fit in four fifths of the "
+                        "memory), iterative above; the 2D steady state "
+                        "always direct.");
       prm.declare_entry("Direct solver limit",
                         "500000",
                         Patterns::Integer(1),

@@ -32,8 +32,9 @@ energy balance mu_energy/mu - 1 per grid.
 elements: the adhesive sphere of tests/sphere_fem_adhesive.prm (R_hat 100,
 Tabor parameter 1, F_hat 1) at V_hat 0.01 and 0.316, the boundary
 elements on grids of 2, 1, 0.5 and 0.25 eps (one process) and the finite
-elements at the levels of SPHERE_FEM (two processes; the 2-eps level holds
-half a million unknowns and takes about 40 minutes). Printed per speed:
+elements at the levels of SPHERE_FEM (two processes; the 2-eps level and
+the one graded by 0.5 hold half a million unknowns each and take 52 and 36
+minutes, the whole study about an hour and a half). Printed per speed:
 mu and A_hat of each grid, Richardson's value from the last three, and
 each finite-element level's difference from it; the energy balance per
 level.

@@ -348,6 +348,14 @@ def fem3d(argv):
 CURVE_SPEEDS = '0.01, 0.0316228, 0.1, 0.316228, 1, 3.16228, 10, 31.6228, 100, 316.228, 1000'
 
 
+# tests/sphere_fem_adhesive.prm turned into its reference, the 3D boundary
+# elements in a 160-eps window; the grid (Mesh/Finest surface cell) is the
+# caller's.
+SPHERE_FEM_BEM = {'Sliding/Solver': 'boundary-element', 'Sliding/Viscous strain degree': None,
+                  'Geometry/Domain width': 160, 'Mesh/Mesh grading': None,
+                  'Solver/Linear solver': None}
+
+
 def fem3d_curve(argv):
     """A whole friction curve of the 3D finite elements, approach included:
     tests/sphere_fem_adhesive.prm (R_hat 100, Lennard-Jones at the Tabor
@@ -369,10 +377,7 @@ def fem3d_curve(argv):
     common = {'Adhesion/Tabor parameter': muT, 'Sliding/Sliding speed': CURVE_SPEEDS}
     fem_settings = {**common, 'Sliding/Viscous strain degree': '1',
                     'Solver/Linear solver': solver}
-    bem_settings = {**common, 'Sliding/Solver': 'boundary-element',
-                    'Sliding/Viscous strain degree': None, 'Geometry/Domain width': 160,
-                    'Mesh/Finest surface cell': 0.5, 'Mesh/Mesh grading': None,
-                    'Solver/Linear solver': None}
+    bem_settings = {**common, **SPHERE_FEM_BEM, 'Mesh/Finest surface cell': 0.5}
     if muT != '1':  # the attraction switched on deeper (doc/steady_state.md)
         fem_settings['Loading/Final approach'] = '6'
     runs = [('bem', 1, bem_settings)] + [(f'fem_np{np}', np, fem_settings) for np in procs]

@@ -57,7 +57,7 @@ import tempfile
 import time
 
 from . import prm, tables
-from .bench import ROOT, VISCOSLIDE, prepare
+from .bench import ROOT, SPHERE_FEM_BEM, VISCOSLIDE, prepare
 
 
 # name: (input, reference file, speeds, levels as (finest cell, grading),
@@ -226,9 +226,8 @@ def measure_sphere_fem(work, viscoslide=VISCOSLIDE, root=ROOT, levels=None, cell
     source, speeds, all_levels, all_cells = SPHERE_FEM
     levels, cells = levels or all_levels, cells or all_cells
     path = os.path.join(root, source)
-    bem = {'Sliding/Solver': 'boundary-element', 'Sliding/Viscous strain degree': None,
-           'Geometry/Domain width': 160, 'Solver/Linear solver': None}
-    grids = [run_level(viscoslide, path, work, f'sphere_fem_grid{k}', speeds, cell, None, bem)
+    grids = [run_level(viscoslide, path, work, f'sphere_fem_grid{k}', speeds, cell, None,
+                       SPHERE_FEM_BEM)
              for k, cell in enumerate(cells)]
     fem = {'Sliding/Viscous strain degree': 1, 'Solver/Linear solver': None}
     results = [run_level(viscoslide, path, work, f'sphere_fem_level{k}', speeds, cell,

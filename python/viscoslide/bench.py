@@ -378,8 +378,8 @@ def fem3d_curve(argv):
     fem_settings = {**common, 'Sliding/Viscous strain degree': '1',
                     'Solver/Linear solver': solver}
     bem_settings = {**common, **SPHERE_FEM_BEM, 'Mesh/Finest surface cell': 0.5}
-    if muT != '1':  # the attraction switched on deeper (doc/steady_state.md)
-        fem_settings['Loading/Final approach'] = '6'
+    if muT != '1':  # the stronger attraction holds the load deeper (doc/steady_state.md)
+        fem_settings['Loading/Final approach'] = bem_settings['Loading/Final approach'] = '6'
     runs = [('bem', 1, bem_settings)] + [(f'fem_np{np}', np, fem_settings) for np in procs]
     tables_of = {}
     print(f"{'run':<9} {'wall_s':>8} {'unknowns':>9} {'peak_GB':>8} {'speeds':>6} "

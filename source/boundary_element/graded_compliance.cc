@@ -125,26 +125,39 @@ namespace viscoslide
       return;
     V = speed;
     effective_traction_map(Q, edge);
-    C.reinit(n, n);
-    G.mmult(C, Q);
     // The wake behind s_0 of each retardation: its displacement at x_i
     // per unit edge value, (2/pi) int_0^inf ln(H/(d + t)) e^{-t/L} dt,
     // d = x_i - s_0.
+    wake.assign(retardation.size(), {});
     for (unsigned int r = 0; r < retardation.size(); ++r)
       if (!edge[r].empty())
         {
           const auto [theta, c] = retardation[r];
           const double L        = V * theta;
+          wake[r].resize(n);
           for (unsigned int i = 0; i < n; ++i)
             {
               const double d = x[i] - s[0];
-              const double T =
-                2. / M_PI * L *
+              wake[r][i] =
+                c * 2. / M_PI * L *
                 (std::log(depth / d) - scaled_exponential_integral(d / L));
-              for (unsigned int k = 0; k < n; ++k)
-                C(i, k) += c * T * edge[r][k];
             }
         }
+    formed = false;
+    C.reinit(0, 0);
+  }
+
+
+  void
+  GradedCompliance::form_matrix() const
+  {
+    C.reinit(n, n);
+    G.mmult(C, Q);
+    for (unsigned int r = 0; r < retardation.size(); ++r)
+      for (unsigned int i = 0; i < wake[r].size(); ++i)
+        for (unsigned int k = 0; k < n; ++k)
+          C(i, k) += wake[r][i] * edge[r][k];
+    formed = true;
   }
 
 
@@ -152,13 +165,31 @@ namespace viscoslide
   GradedCompliance::apply(const Vector<double> &q, Vector<double> &u) const
   {
     u.reinit(n);
-    C.vmult(u, q);
+    if (formed)
+      {
+        C.vmult(u, q);
+        return;
+      }
+    Vector<double> q_eff(n);
+    Q.vmult(q_eff, q);
+    G.vmult(u, q_eff);
+    for (unsigned int r = 0; r < retardation.size(); ++r)
+      if (!wake[r].empty())
+        {
+          double E0 = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            E0 += edge[r][k] * q[k];
+          for (unsigned int i = 0; i < n; ++i)
+            u[i] += wake[r][i] * E0;
+        }
   }
 
 
   FullMatrix<double>
   GradedCompliance::block(const unsigned int first, const unsigned int m) const
   {
+    if (!formed)
+      form_matrix();
     FullMatrix<double> b(m, m);
     b.fill(C, 0, 0, first, first);
     return b;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace viscoslide
@@ -191,19 +192,63 @@ namespace viscoslide
     // near the edges, while u varies by thousands of eps over the contact
     // at R_hat 1e6, where interpolated displacements would put points deep
     // into the repulsive wall.
-    const std::vector<double> old_x = x;
-    std::vector<double>       old_gap(old_x.size());
-    for (unsigned int j = 0; j < old_x.size(); ++j)
+    std::vector<double> old_gap(x.size());
+    for (unsigned int j = 0; j < x.size(); ++j)
       old_gap[j] = scales.eps + h[j] - delta - u[j];
+    const unsigned int n = new_boundaries.size() - 1;
+    Vector<double>     gap(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        // The first grid: u = 0. Else linear between the old points, beyond
+        // them the nearer end's.
+        const double centre = 0.5 * (new_boundaries[j] + new_boundaries[j + 1]);
+        const double from   = shift ? centre - shift(centre) : centre;
+        const auto   k = std::upper_bound(x.begin(), x.end(), from) - x.begin();
+        if (x.empty())
+          gap[j] = scales.eps + indenter.profile(centre) - delta;
+        else if (k == 0)
+          gap[j] = old_gap[0];
+        else if (k == long(x.size()))
+          gap[j] = old_gap[x.size() - 1];
+        else
+          {
+            const double t = (from - x[k - 1]) / (x[k] - x[k - 1]);
+            gap[j]         = (1 - t) * old_gap[k - 1] + t * old_gap[k];
+          }
+      }
+    set_graded_cells(new_boundaries, edges, gap);
+    ++grid_generation;
+    pcout << "Graded boundary-element grid: " << n << " cells, " << dx
+          << " eps at the contact edges x = " << edges.first / scales.eps
+          << ", " << edges.second / scales.eps << " eps, window "
+          << boundaries.front() / scales.eps << " to "
+          << boundaries.back() / scales.eps << " eps" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::set_graded_cells(
+    const std::vector<double>       &new_boundaries,
+    const std::pair<double, double> &edges,
+    const Vector<double>            &gap,
+    std::unique_ptr<Compliance>      kept)
+  {
     boundaries           = new_boundaries;
     grid_edges           = edges;
     const unsigned int n = boundaries.size() - 1;
     shape[dim - 2]       = n;
-    compliance           = std::make_unique<GradedCompliance>(material,
-                                                    prm.material.poisson_ratio,
-                                                    boundaries,
-                                                    thickness);
-    set_compliance_speed(V_hat * scales.eps / scales.tau_ref);
+    if (kept)
+      compliance = std::move(kept);
+    else
+      {
+        // The window preconditioner refers to the compliance it was made
+        // with.
+        preconditioner.reset();
+        compliance = std::make_unique<GradedCompliance>(
+          material, prm.material.poisson_ratio, boundaries, thickness);
+        set_compliance_speed(V_hat * scales.eps / scales.tau_ref);
+      }
     x.resize(n);
     y.assign(n, 0.);
     h.resize(n);
@@ -216,31 +261,15 @@ namespace viscoslide
         area[j]  = boundaries[j + 1] - boundaries[j];
         h[j]     = indenter.profile(x[j]);
         slope[j] = indenter.slope(x[j]);
-        if (old_x.empty())
-          continue;
-        // Linear between the old points, beyond them the nearer end's.
-        const double from = shift ? x[j] - shift(x[j]) : x[j];
-        const auto   k =
-          std::upper_bound(old_x.begin(), old_x.end(), from) - old_x.begin();
-        double gap;
-        if (k == 0)
-          gap = old_gap[0];
-        else if (k == long(old_x.size()))
-          gap = old_gap[old_x.size() - 1];
-        else
-          {
-            const double t = (from - old_x[k - 1]) / (old_x[k] - old_x[k - 1]);
-            gap            = (1 - t) * old_gap[k - 1] + t * old_gap[k];
-          }
-        u[j] = scales.eps + h[j] - delta - gap;
+        u[j]     = scales.eps + h[j] - delta - gap[j];
       }
-    ++grid_generation;
-    preconditioner.reset();
-    pcout << "Graded boundary-element grid: " << n << " cells, " << dx
-          << " eps at the contact edges x = " << edges.first / scales.eps
-          << ", " << edges.second / scales.eps << " eps, window "
-          << boundaries.front() / scales.eps << " to "
-          << boundaries.back() / scales.eps << " eps" << std::endl;
+    // The boundaries at the two edges (graded_boundaries places them).
+    for (unsigned int e = 0; e < 2; ++e)
+      {
+        const double at = e == 0 ? edges.first : edges.second;
+        focus[e] = std::lower_bound(boundaries.begin(), boundaries.end(), at) -
+                   boundaries.begin();
+      }
   }
 
 
@@ -382,34 +411,61 @@ namespace viscoslide
     if (range > scales.eps)
       pcout << ", the law's range from " << range / scales.eps << " eps";
     pcout << std::endl;
-    for (;;)
+    const auto fail = [this](const double at) {
+      return std::runtime_error(
+        "the boundary-element solver found no equilibrium from the JKR "
+        "contact at the Target load (Newton's method and the relaxation "
+        "did not converge on the graded grid at the law's range " +
+        CsvTable::format(at / scales.eps) + " eps)");
+    };
+    if (solve() < 0)
+      throw fail(range);
+    // Each step shrinks the range by `factor`; a step that fails is taken
+    // again shorter, and only a step of a few percent is given the
+    // relaxation, which crawls.
+    double factor = 0.7;
+    while (range > scales.eps)
       {
-        if (solve() < 0)
-          throw std::runtime_error(
-            "the boundary-element solver found no equilibrium from the JKR "
-            "contact at the Target load (Newton's method and the relaxation "
-            "did not converge on the graded grid at the law's range " +
-            CsvTable::format(range / scales.eps) + " eps)");
-        if (range == scales.eps)
-          return;
+        const Vector<double> u_at = u, gaps_at = gaps, traction_at = traction;
+        const double         delta_at                 = delta;
+        const std::vector<double>       boundaries_at = boundaries;
+        const std::pair<double, double> edges_at      = grid_edges;
+        const double next = std::max(scales.eps, factor * range);
         // The contact's gap shrinks with the range: delta follows, so that
         // the next law finds the contact at its own equilibrium gap; where
         // the surfaces are nearer than the old law's peak, the gap is where
         // the new law gives the old traction (the wall's stiffness grows as
         // 1/range^2: at the old gaps the pressure under the contact would
         // jump).
-        const double next = std::max(scales.eps, 0.7 * range);
         const double peak = gap_for_traction(traction_law(), range)(1e300);
         set_law_range(next);
         const auto next_gap = gap_for_traction(traction_law(), next);
         delta += range - next;
         for (unsigned int j = 0; j < u.size(); ++j)
-          if (gaps[j] < peak)
-            u[j] = scales.eps + h[j] - delta - next_gap(traction[j]);
-        range = next;
-        pcout << "  the law's range " << range / scales.eps << " eps, "
-              << u.size() << " cells, L_hat = "
-              << last_quantities.contact_length / scales.contact << std::endl;
+          if (gaps_at[j] < peak)
+            u[j] = scales.eps + h[j] - delta - next_gap(traction_at[j]);
+        const bool last_resort = factor > 0.95;
+        continuing             = !last_resort;
+        const bool converged   = solve() >= 0;
+        continuing             = false;
+        if (converged)
+          {
+            range  = next;
+            factor = std::max(0.7, factor * factor);
+            pcout << "  the law's range " << range / scales.eps << " eps, "
+                  << u.size() << " cells, L_hat = "
+                  << last_quantities.contact_length / scales.contact
+                  << std::endl;
+            continue;
+          }
+        if (last_resort)
+          throw fail(next);
+        set_law_range(range);
+        delta = delta_at;
+        set_graded_cells(boundaries_at, edges_at, gaps_at);
+        u = u_at;
+        assemble(false); // the gaps and tractions the next step starts from
+        factor = std::sqrt(factor);
       }
   }
 
@@ -516,6 +572,29 @@ namespace viscoslide
     residual[n] = control.force_controlled
                     ? control.mismatch(Fn, delta) / scales.sigma_max
                     : 0.;
+    if (with_matrix && graded)
+      {
+        // The residual's rounding error: at R_hat 1e6 and more u is 1e4
+        // eps, its gap's last digits times the repulsive wall's stiffness
+        // a traction that the coarse cells' compliance turns into 1e-6 eps
+        // and more, above the tolerance. The graded compliance is
+        // positive, so that C|v| sums the magnitudes of the terms of C v;
+        // their rounding errors, of either sign, add up as a random walk
+        // (1/sqrt(n) of that sum).
+        Vector<double> magnitude(n), C_magnitude;
+        for (unsigned int j = 0; j < n; ++j)
+          magnitude[j] =
+            std::abs(traction[j]) +
+            std::abs(tangent[j]) *
+              (std::abs(u[j]) + std::abs(h[j]) + std::abs(delta) + scales.eps);
+        compliance->apply(magnitude, C_magnitude);
+        double sum = 0;
+        for (unsigned int j = 0; j < n; ++j)
+          sum += std::pow(std::numeric_limits<double>::epsilon() *
+                            (std::abs(u[j]) + C_magnitude[j]),
+                          2);
+        round_off = std::sqrt(sum / n) / scales.eps;
+      }
     if (with_matrix)
       update_preconditioner();
   }
@@ -611,6 +690,17 @@ namespace viscoslide
   void
   BoundaryElementSolver<dim>::compute_update()
   {
+    Vector<double> rhs(residual);
+    rhs *= -1.;
+    solve_linearized(rhs, update);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::solve_linearized(const Vector<double> &rhs,
+                                               Vector<double>       &solution)
+  {
     TimerOutput::Scope t(timer, "boundary element: GMRES");
     const unsigned int n = u.size();
     // The Jacobian: du + C[(q' + c) du + q' d delta], and the load row.
@@ -637,18 +727,16 @@ namespace viscoslide
           s.control.force_controlled ? load / s.scales.sigma_max : src[n];
       }
     } jacobian{*this};
-    Vector<double> rhs(residual);
-    rhs *= -1.;
-    update.reinit(n + 1);
+    solution.reinit(n + 1);
     SolverControl solver_control(1000, 1e-8 * rhs.l2_norm(), false, false);
     SolverGMRES<Vector<double>> gmres(
       solver_control, SolverGMRES<Vector<double>>::AdditionalData(100));
     try
       {
         if constexpr (dim == 3)
-          gmres.solve(jacobian, update, rhs, *multigrid);
+          gmres.solve(jacobian, solution, rhs, *multigrid);
         else
-          gmres.solve(jacobian, update, rhs, *preconditioner);
+          gmres.solve(jacobian, solution, rhs, *preconditioner);
         last_gmres_converged = true;
       }
     catch (SolverControl::NoConvergence &)
@@ -676,7 +764,9 @@ namespace viscoslide
     NewtonProblem p;
     p.assemble      = [this](const bool with_matrix) { assemble(with_matrix); };
     p.residual_norm = [this] { return residual_norm(); };
-    p.tolerance     = [this] { return 100. * prm.solver.newton_tolerance; };
+    p.tolerance     = [this] {
+      return std::max(100. * prm.solver.newton_tolerance, round_off);
+    };
     p.compute_update   = [this] { compute_update(); };
     p.update_norm      = [this] { return update.l2_norm(); };
     p.update_max_norm  = [this] { return update.linfty_norm(); };
@@ -759,10 +849,24 @@ namespace viscoslide
                                   prm.solver.line_search,
                                   prm.solver.verbose,
                                   pcout)
-                         : relax_from_start();
+                         : -1;
+    // On a graded grid an edge's zone that must move by more than its
+    // width moves as one unknown (solve_following_edges).
+    if constexpr (dim == 2)
+      if (its < 0 && in_contact && graded)
+        {
+          u     = u_start;
+          delta = delta_start;
+          preconditioner.reset();
+          its = solve_following_edges();
+          if (its >= 0)
+            return its;
+        }
     // Past a jump of a contact edge the equilibrium is not near: relax
-    // towards it (newton.h).
-    if (its < 0 && in_contact)
+    // towards it (newton.h). In a continuation on a graded grid a shorter
+    // step is cheaper than the relaxation, which moves the edges by a
+    // fraction of eps per step.
+    if (its < 0 && !(graded && continuing))
       its = relax_from_start();
     if (its < 0)
       {
@@ -787,6 +891,15 @@ namespace viscoslide
                                      const std::function<void()> &on_converged,
                                      const std::function<bool()> &done)
   {
+    continuing = true;
+    struct ResetOnReturn
+    {
+      bool &flag;
+      ~ResetOnReturn()
+      {
+        flag = false;
+      }
+    } reset_continuing{continuing};
     double         at = from, size = step;
     double         at_before = 0, delta_before = 0;
     Vector<double> u_before;

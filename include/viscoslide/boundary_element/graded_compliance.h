@@ -28,7 +28,10 @@
 // matrix G Q + sum_r c_r T_r (x) E0_r, G the elastic influence, Q the
 // effective-traction map (upper triangular), T_r the wake's displacement
 // per unit edge value and E0_r the row that gives E_0 of arm r. n^2
-// numbers: the graded grid keeps n in the thousands.
+// numbers: the graded grid keeps n in the thousands. C itself (n^3 flops)
+// is formed when a block of it is first asked for; until then apply()
+// uses the factors (n^2 flops), which is what a grid that moves with the
+// contact edges, made anew at every step, needs.
 #ifndef viscoslide_boundary_element_graded_compliance_h
 #define viscoslide_boundary_element_graded_compliance_h
 
@@ -84,10 +87,16 @@ namespace viscoslide
     std::vector<std::pair<double, double>> retardation; // (theta_r, c_r)
     double                                 inverse_glassy;
     double                                 V = -1;
-    FullMatrix<double>                     G, C;
-    // The effective-traction map of the present speed, and the rows E0_r.
+    FullMatrix<double>                     G;
+    // The effective-traction map of the present speed, the rows E0_r and
+    // the wakes' displacements c_r T_r at the cells.
     FullMatrix<double>               Q;
-    std::vector<std::vector<double>> edge;
+    std::vector<std::vector<double>> edge, wake;
+    // C, once formed.
+    mutable FullMatrix<double> C;
+    mutable bool               formed = false;
+    void
+    form_matrix() const;
   };
 } // namespace viscoslide
 

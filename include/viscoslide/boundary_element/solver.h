@@ -46,6 +46,7 @@
 #include <viscoslide/steady_sliding.h>
 #include <viscoslide/steady_state_table.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -131,6 +132,15 @@ namespace viscoslide
     make_graded_grid(const std::vector<double>           &new_boundaries,
                      const std::pair<double, double>     &edges,
                      const std::function<double(double)> &shift = {});
+    // The graded grid's cells between `new_boundaries`, made for contact
+    // edges at `edges`, with the gaps `gap` (delta kept): the compliance
+    // `kept` if given (made for these boundaries), else a new one.
+    // [solver.cc]
+    void
+    set_graded_cells(const std::vector<double>       &new_boundaries,
+                     const std::pair<double, double> &edges,
+                     const Vector<double>            &gap,
+                     std::unique_ptr<Compliance>      kept = {});
     // make_graded_grid about contact edges at trail and lead, the grid
     // reaching margin_factor times the contact's width (at least 50 eps)
     // beyond each. [solver.cc]
@@ -196,6 +206,31 @@ namespace viscoslide
     solve();
     int
     solve_on_grid();
+    // Newton's method on the graded grid with the two contact edges among
+    // the unknowns (edge_following.cc): the grid moves with them, each
+    // edge's cells and gaps translated, the cells between stretched, and
+    // one equation per edge holds the gap at the contact threshold where
+    // the grid is finest. An edge's adhesive zone then moves as a whole,
+    // as one unknown, instead of through the cells of a fixed grid, where
+    // its translation is nearly singular (a neutral mode of a wide
+    // contact) and non-linear (the cells grow away from the edge).
+    // Returns the iterations or -1, the state then restored.
+    int
+    solve_following_edges();
+    NewtonProblem
+    edge_following_problem();
+    void
+    assemble_following_edges(bool with_matrix);
+    void
+    compute_edge_following_update();
+    // The boundaries `from`, made for edges `from_edges`, moved with the
+    // edges by d_trail and d_lead: rigidly beyond each edge, linearly in
+    // between. [edge_following.cc]
+    static std::vector<double>
+    moved_boundaries(const std::vector<double>       &from,
+                     const std::pair<double, double> &from_edges,
+                     double                           d_trail,
+                     double                           d_lead);
     NewtonProblem
     newton_problem();
     void
@@ -204,6 +239,9 @@ namespace viscoslide
     residual_norm() const;
     void
     compute_update();
+    // GMRES on the Jacobian (and the load row) for `rhs`. [solver.cc]
+    void
+    solve_linearized(const Vector<double> &rhs, Vector<double> &solution);
     // Steps the control parameter from its present value to `to` through
     // set(value), in steps no larger than `step` (halved where Newton
     // fails, down to `min_step`), calling on_converged after each and
@@ -268,7 +306,9 @@ namespace viscoslide
     const bool                graded;
     std::vector<double>       area, boundaries;
     std::pair<double, double> grid_edges{0., 0.};
-    double                    margin_factor = 0.5;
+    // The boundaries at grid_edges: the focus of each edge.
+    std::array<unsigned int, 2> focus{};
+    double                      margin_factor = 0.5;
     // Counts the grids made, so that a secant predictor spans one grid.
     unsigned int                      grid_generation = 0;
     std::array<unsigned int, dim - 1> shape{};
@@ -289,7 +329,20 @@ namespace viscoslide
     // iterate a line search starts from, the surface dashpot of relax().
     Vector<double> gaps, traction, tangent, residual, update, u0;
     double         delta0 = 0, dashpot = 0;
+    // The rounding error of residual_norm() at the last Jacobian (graded
+    // grid): Newton's method takes it as its tolerance where it is larger.
+    double         round_off = 0;
     Vector<double> anchor;
+    // solve_following_edges(): the residual's derivative along each edge's
+    // motion, the gap equations' misfits, the edges' update, and the grid
+    // and gaps a line search starts from.
+    std::array<Vector<double>, 2> edge_columns;
+    std::array<double, 2>         pin_misfit{}, edge_update{};
+    std::vector<double>           boundaries0;
+    // Whether follow() is stepping (a failed step is halved there).
+    bool                      continuing = false;
+    std::pair<double, double> grid_edges0;
+    Vector<double>            gaps0;
 
     // The preconditioner: the Jacobian of the window [first, first + m) of
     // points near the contact, factorized, with the load equation bordered.

@@ -1,5 +1,5 @@
 // Newton's method on the graded grid with the contact edges among the
-// unknowns (doc/boundary_element.md, Following the edges).
+// unknowns (doc/boundary_element.md, Graded grid, The edges as unknowns).
 #include <deal.II/lac/full_matrix.h>
 
 #include <viscoslide/boundary_element/solver.h>

@@ -213,8 +213,9 @@ namespace viscoslide
     // the grid is finest. An edge's adhesive zone then moves as a whole,
     // as one unknown, instead of through the cells of a fixed grid, where
     // its translation is nearly singular (a neutral mode of a wide
-    // contact) and non-linear (the cells grow away from the edge).
-    // Returns the iterations or -1, the state then restored.
+    // contact) and non-linear (the cells grow away from the edge). Starts
+    // from a grid recentred on the state's edges. Returns the iterations
+    // or -1, the state then restored.
     int
     solve_following_edges();
     NewtonProblem
@@ -339,10 +340,10 @@ namespace viscoslide
     std::array<Vector<double>, 2> edge_columns;
     std::array<double, 2>         pin_misfit{}, edge_update{};
     std::vector<double>           boundaries0;
+    std::pair<double, double>     grid_edges0;
+    Vector<double>                gaps0;
     // Whether follow() is stepping (a failed step is halved there).
-    bool                      continuing = false;
-    std::pair<double, double> grid_edges0;
-    Vector<double>            gaps0;
+    bool continuing = false;
 
     // The preconditioner: the Jacobian of the window [first, first + m) of
     // points near the contact, factorized, with the load equation bordered.

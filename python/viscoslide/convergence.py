@@ -110,7 +110,7 @@ def run_level(viscoslide, source, work, name, speeds, cell, grading, other, proc
         'Mesh/Finest surface cell': cell, 'Mesh/Mesh grading': grading, **other})
     start, last = time.time(), 0.
     with open(out + '.log', 'w') as log:
-        command = [mpiexec, '-np', str(procs)] * (procs > 1) + [viscoslide, path]
+        command = ([mpiexec, '-np', str(procs)] if procs > 1 else []) + [viscoslide, path]
         p = subprocess.Popen(command, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True)
         for line in p.stdout:

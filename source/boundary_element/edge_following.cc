@@ -2,6 +2,7 @@
 // unknowns (doc/boundary_element.md, Graded grid, The edges as unknowns).
 #include <deal.II/lac/full_matrix.h>
 
+#include <viscoslide/boundary_element/grid.h>
 #include <viscoslide/boundary_element/solver.h>
 #include <viscoslide/boundary_element/window_preconditioner.h>
 
@@ -18,13 +19,10 @@ namespace viscoslide
     const double                     d_trail,
     const double                     d_lead)
   {
-    const auto [trail, lead] = from_edges;
+    const auto          shift = edge_shift(from_edges, d_trail, d_lead);
     std::vector<double> moved(from);
     for (double &b : moved)
-      b += b <= trail ? d_trail
-           : b >= lead
-             ? d_lead
-             : d_trail + (b - trail) / (lead - trail) * (d_lead - d_trail);
+      b += shift(b);
     return moved;
   }
 
@@ -151,7 +149,6 @@ namespace viscoslide
       if (control.force_controlled)
         delta += alpha * update[n];
     };
-    p.set_dashpot = [](const double) {};
     return p;
   }
 

@@ -144,6 +144,21 @@ namespace viscoslide
   }
 
 
+  std::function<double(double)>
+  edge_shift(const std::pair<double, double> &edges,
+             const double                     d_trail,
+             const double                     d_lead)
+  {
+    const auto [trail, lead] = edges;
+    return [=](const double x) {
+      return x <= trail ? d_trail
+             : x >= lead
+               ? d_lead
+               : d_trail + (x - trail) / (lead - trail) * (d_lead - d_trail);
+    };
+  }
+
+
   double
   cylinder_jkr_half_width(const double P, const double dgamma, const double R)
   {

@@ -288,15 +288,9 @@ namespace viscoslide
                    edges.second + ratio * (edges.second - edges_before.second);
     if (!(lead > trail))
       return;
-    const double shift_trail = trail - edges.first,
-                 shift_lead  = lead - edges.second;
-    // Each edge's zone moved with its edge; between them the shift varies
-    // linearly.
-    const auto shift = [&](const double x) {
-      const double t =
-        std::clamp((x - edges.first) / (edges.second - edges.first), 0., 1.);
-      return shift_trail + t * (shift_lead - shift_trail);
-    };
+    // Each edge's zone moved with its edge.
+    const auto shift =
+      edge_shift(edges, trail - edges.first, lead - edges.second);
     make_graded_grid_about(trail, lead, shift);
   }
 
@@ -445,10 +439,7 @@ namespace viscoslide
           if (gaps_at[j] < peak)
             u[j] = scales.eps + h[j] - delta - next_gap(traction_at[j]);
         const bool last_resort = factor > 0.95;
-        continuing             = !last_resort;
-        const bool converged   = solve() >= 0;
-        continuing             = false;
-        if (converged)
+        if (solve(last_resort) >= 0)
           {
             range  = next;
             factor = std::max(0.7, factor * factor);
@@ -791,9 +782,9 @@ namespace viscoslide
 
   template <int dim>
   int
-  BoundaryElementSolver<dim>::solve()
+  BoundaryElementSolver<dim>::solve(const bool relax)
   {
-    int its = solve_on_grid();
+    int its = solve_on_grid(relax);
     if (!graded || its < 0)
       return its;
     // A graded grid follows the contact edges: solved again on a grid
@@ -805,7 +796,7 @@ namespace viscoslide
     const auto                old_edges      = grid_edges;
     for (unsigned int k = 0; k < 8 && refit_graded_grid(false); ++k)
       {
-        const int more = solve_on_grid();
+        const int more = solve_on_grid(relax);
         if (more < 0)
           {
             make_graded_grid(old_boundaries, old_edges);
@@ -823,7 +814,7 @@ namespace viscoslide
 
   template <int dim>
   int
-  BoundaryElementSolver<dim>::solve_on_grid()
+  BoundaryElementSolver<dim>::solve_on_grid(const bool relax)
   {
     const Vector<double> u_start          = u;
     const double         delta_start      = delta;
@@ -863,10 +854,8 @@ namespace viscoslide
             return its;
         }
     // Past a jump of a contact edge the equilibrium is not near: relax
-    // towards it (newton.h). In a continuation on a graded grid a shorter
-    // step is cheaper than the relaxation, which moves the edges by a
-    // fraction of eps per step.
-    if (its < 0 && !(graded && continuing))
+    // towards it (newton.h).
+    if (its < 0 && relax)
       its = relax_from_start();
     if (its < 0)
       {
@@ -891,15 +880,6 @@ namespace viscoslide
                                      const std::function<void()> &on_converged,
                                      const std::function<bool()> &done)
   {
-    continuing = true;
-    struct ResetOnReturn
-    {
-      bool &flag;
-      ~ResetOnReturn()
-      {
-        flag = false;
-      }
-    } reset_continuing{continuing};
     double         at = from, size = step;
     double         at_before = 0, delta_before = 0;
     Vector<double> u_before;
@@ -947,7 +927,9 @@ namespace viscoslide
               std::min(u[j],
                        scales.eps + h[j] - delta - std::min(g_at, scales.eps));
           }
-        if (solve() >= 0)
+        // On a graded grid a shorter step is cheaper than the relaxation,
+        // which moves the edges by a fraction of eps per step.
+        if (solve(!graded) >= 0)
           {
             at_before         = at;
             u_before          = u_at;

@@ -7,6 +7,8 @@
 
 #include <viscoslide/input.h>
 
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace viscoslide
@@ -49,6 +51,15 @@ namespace viscoslide
                     double finest,
                     double ratio,
                     double margin);
+
+  // The displacement of a point x of a graded grid made for contact edges
+  // at `edges` when the edges move by d_trail and d_lead: rigidly with
+  // each edge beyond it, linearly in between, so that each edge's cells
+  // (and the adhesive zone on them) move with it.
+  std::function<double(double)>
+  edge_shift(const std::pair<double, double> &edges,
+             double                           d_trail,
+             double                           d_lead);
 
   // The half-width a of the JKR contact of a parabolic cylinder of radius
   // R on a solid of plane-strain modulus 1 under the load P per unit

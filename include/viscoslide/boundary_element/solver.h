@@ -198,14 +198,16 @@ namespace viscoslide
     void
     update_preconditioner();
 
-    // Newton's method, then pseudo-transient relaxation, at the present
-    // speed, control and delta or load; on failure the state is restored.
-    // Returns the iterations or -1. A graded grid is made anew about the
-    // edges found until they lie where it is finest. [solver.cc]
+    // Newton's method (on a graded grid, then with the edges among the
+    // unknowns), then, if `relax`, pseudo-transient relaxation, at the
+    // present speed, control and delta or load; on failure the state is
+    // restored. Returns the iterations or -1. A graded grid is made anew
+    // about the edges found until they lie where it is finest.
+    // [solver.cc]
     int
-    solve();
+    solve(bool relax = true);
     int
-    solve_on_grid();
+    solve_on_grid(bool relax);
     // Newton's method on the graded grid with the two contact edges among
     // the unknowns (edge_following.cc): the grid moves with them, each
     // edge's cells and gaps translated, the cells between stretched, and
@@ -225,8 +227,8 @@ namespace viscoslide
     void
     compute_edge_following_update();
     // The boundaries `from`, made for edges `from_edges`, moved with the
-    // edges by d_trail and d_lead: rigidly beyond each edge, linearly in
-    // between. [edge_following.cc]
+    // edges by d_trail and d_lead (edge_shift, grid.h).
+    // [edge_following.cc]
     static std::vector<double>
     moved_boundaries(const std::vector<double>       &from,
                      const std::pair<double, double> &from_edges,
@@ -342,8 +344,6 @@ namespace viscoslide
     std::vector<double>           boundaries0;
     std::pair<double, double>     grid_edges0;
     Vector<double>                gaps0;
-    // Whether follow() is stepping (a failed step is halved there).
-    bool continuing = false;
 
     // The preconditioner: the Jacobian of the window [first, first + m) of
     // points near the contact, factorized, with the load equation bordered.

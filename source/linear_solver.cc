@@ -4,8 +4,10 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <viscoslide/heartbeat.h>
 #include <viscoslide/linear_solver.h>
 #include <viscoslide/mpi_gather.h>
+#include <viscoslide/output.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
@@ -300,21 +302,40 @@ namespace viscoslide
     });
     AssertThrow(k == values.size(),
                 ExcMessage("The matrix changed its pattern without clear()"));
-    // A workspace too small for the pivoting that occurred: more, again.
-    for (int attempt = 0;; ++attempt)
-      {
-        mumps->id.job = 2;
-        dmumps_c(&mumps->id);
-        const int e = mumps->infog(1);
-        if (attempt < 4 && (e == -8 || e == -9 || e == -11 || e == -12 ||
-                            e == -14 || e == -15 || e == -17 || e == -20))
-          mumps->icntl(14) *= 2;
-        else
-          break;
-      }
+    // The time left from the operations the analysis counted and the rate
+    // of the factorizations before this one.
+    const double estimated_flops = mumps->id.rinfog[0];
+    Timer        timer;
+    {
+      const HeartbeatWhile progress(
+        Utilities::MPI::this_mpi_process(comm) == 0, [&](const double s) {
+          std::string line = "        MUMPS factorization of " +
+                             std::to_string(mumps->id.n) +
+                             " unknowns: " + format_duration(s) + " so far";
+          if (flop_rate > 0)
+            line +=
+              ", ~" +
+              format_duration(std::max(estimated_flops / flop_rate - s, 0.)) +
+              " left";
+          return line;
+        });
+      // A workspace too small for the pivoting that occurred: more, again.
+      for (int attempt = 0;; ++attempt)
+        {
+          mumps->id.job = 2;
+          dmumps_c(&mumps->id);
+          const int e = mumps->infog(1);
+          if (attempt < 4 && (e == -8 || e == -9 || e == -11 || e == -12 ||
+                              e == -14 || e == -15 || e == -17 || e == -20))
+            mumps->icntl(14) *= 2;
+          else
+            break;
+        }
+    }
     AssertThrow(mumps->infog(1) >= 0,
                 ExcMessage("MUMPS failed in its factorization (INFOG(1) = " +
                            std::to_string(mumps->infog(1)) + ")"));
+    flop_rate = mumps->id.rinfog[2] / std::max(timer.wall_time(), 1e-3);
   }
 
 

@@ -5,6 +5,12 @@
 #define viscoslide_heartbeat_h
 
 #include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <iostream>
+#include <mutex>
+#include <string>
+#include <thread>
 
 namespace viscoslide
 {
@@ -35,6 +41,49 @@ namespace viscoslide
     std::chrono::steady_clock::time_point start =
                                             std::chrono::steady_clock::now(),
                                           last = start;
+  };
+
+
+  // The same for a call that cannot report itself (a MUMPS factorization):
+  // while this object lives, a thread prints line(seconds so far) to
+  // std::cout every 10 s, if `active`.
+  class HeartbeatWhile
+  {
+  public:
+    HeartbeatWhile(const bool                                 active,
+                   std::function<std::string(double seconds)> line)
+    {
+      if (active)
+        watcher = std::thread([this, line = std::move(line)]() {
+          const auto                   start = std::chrono::steady_clock::now();
+          std::unique_lock<std::mutex> lock(mutex);
+          while (!wake.wait_for(lock, std::chrono::seconds(10), [this]() {
+            return done;
+          }))
+            std::cout << line(std::chrono::duration<double>(
+                                std::chrono::steady_clock::now() - start)
+                                .count())
+                      << std::endl;
+        });
+    }
+
+    ~HeartbeatWhile()
+    {
+      if (!watcher.joinable())
+        return;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        done = true;
+      }
+      wake.notify_one();
+      watcher.join();
+    }
+
+  private:
+    std::mutex              mutex;
+    std::condition_variable wake;
+    bool                    done = false;
+    std::thread             watcher;
   };
 } // namespace viscoslide
 

@@ -87,6 +87,9 @@ namespace viscoslide
     std::vector<double> gathered;
     std::vector<int>    counts, offsets;
     std::vector<double> reduced;
+    // Operations per second of the last factorization (its own count over
+    // its wall time), for the time left of the next; 0 before the first.
+    double flop_rate = 0;
   };
 
   // The surface terms on the window T as functions of the unknowns of T

@@ -368,18 +368,33 @@ def fem3d_curve(argv):
     unknowns, the peak memory and GMRES iterations per solve; per speed mu
     and A_hat of both and their differences.
 
-        scripts/bench_fem3d_curve ["procs"] [Tabor parameter] [linear solver]"""
+    Given a layer thickness t_hat, the same on a layer bonded to a rigid
+    base: both methods 8 thicknesses wide (400 eps at least; the boundary
+    elements periodic, the finite elements' sides free), at the six speeds
+    up to 3.16, whose four wakes the 400-eps block holds (V_hat 1000 would
+    want a layer block of 40 000 eps, some 2e6 unknowns).
+
+        scripts/bench_fem3d_curve ["procs"] [Tabor parameter] [linear solver] [layer thickness]"""
     prepare()
     procs = (argv[0] if argv else '2 1').split()
     muT = argv[1] if len(argv) > 1 else '1'
     solver = argv[2] if len(argv) > 2 else 'automatic'
+    layer = argv[3] if len(argv) > 3 else None
     work = tempfile.mkdtemp()
     common = {'Adhesion/Tabor parameter': muT, 'Sliding/Sliding speed': CURVE_SPEEDS}
+    if layer:
+        common = {**common, 'Geometry/Substrate': 'layer', 'Geometry/Layer thickness': layer,
+                  'Sliding/Sliding speed': ', '.join(CURVE_SPEEDS.split(', ')[:6])}
     fem_settings = {**common, 'Sliding/Viscous strain degree': '1',
                     'Solver/Linear solver': solver}
     bem_settings = {**common, **SPHERE_FEM_BEM, 'Mesh/Finest surface cell': 0.5}
+    if layer:
+        fem_settings['Geometry/Domain width'] = bem_settings['Geometry/Domain width'] = \
+            max(400, 8 * float(layer))
     if muT != '1':  # the stronger attraction holds the load deeper (doc/steady_state.md)
-        fem_settings['Loading/Final approach'] = bem_settings['Loading/Final approach'] = '6'
+        fem_settings['Loading/Final approach'] = '6'
+        # the boundary elements approach until the load is reached
+        bem_settings['Loading/Final approach'] = '20'  # as parameter_files/sphere_friction.prm
     runs = [('bem', 1, bem_settings)] + [(f'fem_np{np}', np, fem_settings) for np in procs]
     tables_of = {}
     print(f"{'run':<9} {'wall_s':>8} {'unknowns':>9} {'peak_GB':>8} {'speeds':>6} "

@@ -393,8 +393,9 @@ def fem3d_curve(argv):
             max(400, 8 * float(layer))
     if muT != '1':  # the stronger attraction holds the load deeper (doc/steady_state.md)
         fem_settings['Loading/Final approach'] = '6'
-        # the boundary elements approach until the load is reached
-        bem_settings['Loading/Final approach'] = '20'  # as parameter_files/sphere_friction.prm
+        # The boundary elements stop approaching once the load is reached;
+        # 20 is the bound parameter_files/sphere_friction.prm gives them.
+        bem_settings['Loading/Final approach'] = '20'
     runs = [('bem', 1, bem_settings)] + [(f'fem_np{np}', np, fem_settings) for np in procs]
     tables_of = {}
     print(f"{'run':<9} {'wall_s':>8} {'unknowns':>9} {'peak_GB':>8} {'speeds':>6} "

@@ -264,6 +264,25 @@ namespace viscoslide
       }
 
 
+      // Where the block is as long as the fastest speed's wake asks (it was
+      // lengthened for it), the entries that shorten it.
+      std::string
+      wake_advice(const AllParameters &p)
+      {
+        if (p.sliding.speeds.empty() ||
+            p.geometry.domain_width >
+              p.geometry.wake_lengths * fastest_wake(p) * (1 + 1e-12))
+          return "";
+        std::ostringstream advice;
+        advice << std::setprecision(3) << "; the block is "
+               << p.geometry.domain_width
+               << " eps long to hold the wake of the fastest speed: lower "
+                  "the fastest 'Sliding/Sliding speed' or 'Geometry/Wake "
+                  "lengths'";
+        return advice.str();
+      }
+
+
       // Refused before anything is written, with the entries to change.
       void
       check_finite_elements_3d_fit(const AllParameters &p)
@@ -288,7 +307,7 @@ namespace viscoslide
                                           "at the fast speeds)"
                                         : "")
                       : "")
-                << " (doc/steady_state.md, Memory)";
+                << wake_advice(p) << " (doc/steady_state.md, Memory)";
         require(size.gigabytes <= 0.8 * size.available, message.str());
       }
 

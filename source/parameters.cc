@@ -40,8 +40,9 @@ namespace viscoslide
       solver.verbose = output.verbosity == Verbosity::verbose;
       apply_units(*this);
       CaseSetup::check_consistency(*this);
-      CaseSetup::fit_linear_solver_to_memory(*this);
+      // The memory is counted on the block that will be meshed.
       CaseSetup::fit_block_to_wake(*this);
+      CaseSetup::fit_linear_solver_to_memory(*this);
       CaseSetup::check_mesh_can_hold_case(*this);
       CaseSetup::warn_about_accuracy(*this);
     }

@@ -270,8 +270,9 @@ namespace viscoslide
       wake_advice(const AllParameters &p)
       {
         if (p.sliding.speeds.empty() ||
-            p.geometry.domain_width >
-              p.geometry.wake_lengths * fastest_wake(p) * (1 + 1e-12))
+            std::abs(p.geometry.domain_width -
+                     p.geometry.wake_lengths * fastest_wake(p)) >
+              1e-12 * p.geometry.domain_width)
           return "";
         std::ostringstream advice;
         advice << std::setprecision(3) << "; the block is "

@@ -372,7 +372,7 @@ def fem3d_curve(argv):
     base: both methods 8 thicknesses wide (400 eps at least; the boundary
     elements periodic, the finite elements' sides free), at the six speeds
     up to 3.16, whose four wakes the 400-eps block holds (V_hat 1000 would
-    want a layer block of 40 000 eps, some 2e6 unknowns).
+    want a layer block of 40 000 eps, some 2.7e6 unknowns).
 
         scripts/bench_fem3d_curve ["procs"] [Tabor parameter] [linear solver] [layer thickness]"""
     prepare()

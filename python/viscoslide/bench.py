@@ -382,15 +382,14 @@ def fem3d_curve(argv):
     layer = argv[3] if len(argv) > 3 else None
     work = tempfile.mkdtemp()
     common = {'Adhesion/Tabor parameter': muT, 'Sliding/Sliding speed': CURVE_SPEEDS}
-    if layer:
-        common = {**common, 'Geometry/Substrate': 'layer', 'Geometry/Layer thickness': layer,
-                  'Sliding/Sliding speed': ', '.join(CURVE_SPEEDS.split(', ')[:6])}
+    # Given last, over the reference's own Domain width.
+    on_layer = {} if not layer else {
+        'Geometry/Substrate': 'layer', 'Geometry/Layer thickness': layer,
+        'Geometry/Domain width': max(400, 8 * float(layer)),
+        'Sliding/Sliding speed': ', '.join(CURVE_SPEEDS.split(', ')[:6])}
     fem_settings = {**common, 'Sliding/Viscous strain degree': '1',
-                    'Solver/Linear solver': solver}
-    bem_settings = {**common, **SPHERE_FEM_BEM, 'Mesh/Finest surface cell': 0.5}
-    if layer:
-        fem_settings['Geometry/Domain width'] = bem_settings['Geometry/Domain width'] = \
-            max(400, 8 * float(layer))
+                    'Solver/Linear solver': solver, **on_layer}
+    bem_settings = {**common, **SPHERE_FEM_BEM, 'Mesh/Finest surface cell': 0.5, **on_layer}
     if muT != '1':  # the stronger attraction holds the load deeper (doc/steady_state.md)
         fem_settings['Loading/Final approach'] = '6'
         # The boundary elements stop approaching once the load is reached;

@@ -8,7 +8,7 @@
 namespace viscoslide
 {
   template <int dim>
-  struct SurfaceCompliance<dim>::Plans
+  struct PeriodicCompliance<dim>::Plans
   {
     // FFTW's shape: slowest first, x (the last of n) fastest.
     explicit Plans(const std::array<unsigned int, dim - 1> &n,
@@ -73,7 +73,7 @@ namespace viscoslide
 
 
   template <int dim>
-  SurfaceCompliance<dim>::SurfaceCompliance(
+  PeriodicCompliance<dim>::PeriodicCompliance(
     const Parameters::Substrate              substrate,
     const double                             thickness,
     const ViscoelasticSolid                 &material,
@@ -96,12 +96,12 @@ namespace viscoslide
 
 
   template <int dim>
-  SurfaceCompliance<dim>::~SurfaceCompliance() = default;
+  PeriodicCompliance<dim>::~PeriodicCompliance() = default;
 
 
   template <int dim>
   double
-  SurfaceCompliance<dim>::layer_factor(const double s, const double nu)
+  PeriodicCompliance<dim>::layer_factor(const double s, const double nu)
   {
     // [(3 - 4 nu) sinh 2s - 2s] / [(3 - 4 nu) cosh 2s + 2 s^2 + 5 - 12 nu
     // + 8 nu^2], multiplied through by 2 exp(-2s) so that it neither
@@ -118,7 +118,7 @@ namespace viscoslide
 
   template <int dim>
   std::complex<double>
-  SurfaceCompliance<dim>::modulus(const double omega) const
+  PeriodicCompliance<dim>::modulus(const double omega) const
   {
     const std::complex<double> i(0., 1.);
     std::complex<double>       E = 1.;
@@ -133,7 +133,7 @@ namespace viscoslide
 
   template <int dim>
   double
-  SurfaceCompliance<dim>::elastic_compliance(const double k) const
+  PeriodicCompliance<dim>::elastic_compliance(const double k) const
   {
     if (substrate == Parameters::Substrate::half_plane)
       return k == 0 ? 0. : 2. / k;
@@ -145,7 +145,7 @@ namespace viscoslide
 
   template <int dim>
   std::pair<double, double>
-  SurfaceCompliance<dim>::wave_vector(const unsigned int m) const
+  PeriodicCompliance<dim>::wave_vector(const unsigned int m) const
   {
     const unsigned int n_x = n[dim - 2], kept = n_x / 2 + 1;
     const double       k_x = 2. * M_PI * (m % kept) / (n_x * dx);
@@ -161,7 +161,7 @@ namespace viscoslide
 
   template <int dim>
   void
-  SurfaceCompliance<dim>::set_speed(const double speed)
+  PeriodicCompliance<dim>::set_speed(const double speed)
   {
     V = speed;
     for (unsigned int m = 0; m < n_modes; ++m)
@@ -179,7 +179,7 @@ namespace viscoslide
 
   template <int dim>
   void
-  SurfaceCompliance<dim>::multiply(
+  PeriodicCompliance<dim>::multiply(
     const std::vector<std::complex<double>> &factors,
     const Vector<double>                    &in,
     Vector<double>                          &out) const
@@ -204,8 +204,8 @@ namespace viscoslide
 
   template <int dim>
   void
-  SurfaceCompliance<dim>::apply(const Vector<double> &q,
-                                Vector<double>       &u) const
+  PeriodicCompliance<dim>::apply(const Vector<double> &q,
+                                 Vector<double>       &u) const
   {
     multiply(symbol, q, u);
   }
@@ -213,7 +213,7 @@ namespace viscoslide
 
   template <int dim>
   std::complex<double>
-  SurfaceCompliance<dim>::stiffness_symbol(const unsigned int m) const
+  PeriodicCompliance<dim>::stiffness_symbol(const unsigned int m) const
   {
     if (symbol[m] != 0.)
       return 1. / symbol[m];
@@ -226,8 +226,8 @@ namespace viscoslide
 
   template <int dim>
   void
-  SurfaceCompliance<dim>::apply_stiffness(const Vector<double> &u,
-                                          Vector<double>       &q) const
+  PeriodicCompliance<dim>::apply_stiffness(const Vector<double> &u,
+                                           Vector<double>       &q) const
   {
     multiply(stiffness, u, q);
   }
@@ -235,7 +235,7 @@ namespace viscoslide
 
   template <int dim>
   double
-  SurfaceCompliance<dim>::stiffness_diagonal() const
+  PeriodicCompliance<dim>::stiffness_diagonal() const
   {
     // Modes 0 < k_x < Nyquist stand for themselves and their conjugates.
     const unsigned int n_x = n[dim - 2], kept = n_x / 2 + 1;
@@ -253,7 +253,7 @@ namespace viscoslide
 
   template <int dim>
   Vector<double>
-  SurfaceCompliance<dim>::impulse_response() const
+  PeriodicCompliance<dim>::impulse_response() const
   {
     Vector<double> unit(n_points), response(n_points);
     unit[0] = 1.;
@@ -264,8 +264,8 @@ namespace viscoslide
 
   template <int dim>
   FullMatrix<double>
-  SurfaceCompliance<dim>::block(const unsigned int first,
-                                const unsigned int m) const
+  PeriodicCompliance<dim>::block(const unsigned int first,
+                                 const unsigned int m) const
   {
     (void)first; // circulant: the same block everywhere
     const Vector<double> column = impulse_response();
@@ -279,7 +279,7 @@ namespace viscoslide
 
   template <int dim>
   double
-  SurfaceCompliance<dim>::dissipation_rate(const Vector<double> &q) const
+  PeriodicCompliance<dim>::dissipation_rate(const Vector<double> &q) const
   {
     std::copy(q.begin(), q.end(), plans->real);
     fftw_execute(plans->forward);
@@ -300,6 +300,6 @@ namespace viscoslide
   }
 
 
-  template class SurfaceCompliance<2>;
-  template class SurfaceCompliance<3>;
+  template class PeriodicCompliance<2>;
+  template class PeriodicCompliance<3>;
 } // namespace viscoslide

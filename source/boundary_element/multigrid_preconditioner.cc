@@ -66,7 +66,10 @@ namespace viscoslide
     const ViscoelasticSolid                 &material,
     const double                             nu,
     const std::array<unsigned int, dim - 1> &shape,
-    const double                             dx)
+    const double                             dx,
+    const double                             force_scale)
+    : dA(std::pow(dx, dim - 1))
+    , force_scale(force_scale)
   {
     std::array<unsigned int, dim - 1> s = shape;
     double                            h = dx;
@@ -75,7 +78,7 @@ namespace viscoslide
       {
         Level level;
         level.shape      = s;
-        level.compliance = std::make_unique<SurfaceCompliance<dim>>(
+        level.compliance = std::make_unique<PeriodicCompliance<dim>>(
           substrate, thickness, material, nu, s, h);
         levels.push_back(std::move(level));
         unsigned int points = 1;
@@ -160,13 +163,13 @@ namespace viscoslide
 
   template <int dim>
   void
-  SurfaceMultigrid<dim>::update(const Vector<double> &weight,
-                                const Vector<double> &load_weight,
-                                const bool            force_control,
-                                const double          dA,
-                                const double          force_scale)
+  SurfaceMultigrid<dim>::update(const Vector<double> &tangent,
+                                const double          dashpot,
+                                const bool            force_control)
   {
-    levels[0].weight = weight;
+    const Vector<double> &load_weight = tangent;
+    levels[0].weight                  = tangent;
+    levels[0].weight.add(dashpot);
     for (unsigned int l = 1; l < levels.size(); ++l)
       levels[l].weight = restrict_to(l, levels[l - 1].weight);
     for (Level &level : levels)

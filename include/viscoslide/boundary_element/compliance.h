@@ -72,22 +72,22 @@ namespace viscoslide
 
 
   template <int dim>
-  class SurfaceCompliance : public Compliance
+  class PeriodicCompliance : public Compliance
   {
   public:
     // n points per direction (n_x, and n_y in 3D) of spacing dx (internal
     // units) on one period; `material` gives the arms, nu the Poisson ratio
     // of every branch; `thickness` is the layer's.
-    SurfaceCompliance(Parameters::Substrate                    substrate,
-                      double                                   thickness,
-                      const ViscoelasticSolid                 &material,
-                      double                                   nu,
-                      const std::array<unsigned int, dim - 1> &n,
-                      double                                   dx);
-    ~SurfaceCompliance();
-    SurfaceCompliance(const SurfaceCompliance &) = delete;
-    SurfaceCompliance &
-    operator=(const SurfaceCompliance &) = delete;
+    PeriodicCompliance(Parameters::Substrate                    substrate,
+                       double                                   thickness,
+                       const ViscoelasticSolid                 &material,
+                       double                                   nu,
+                       const std::array<unsigned int, dim - 1> &n,
+                       double                                   dx);
+    ~PeriodicCompliance();
+    PeriodicCompliance(const PeriodicCompliance &) = delete;
+    PeriodicCompliance &
+    operator=(const PeriodicCompliance &) = delete;
 
     void
     set_speed(double V) override;

@@ -26,6 +26,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/surface_grid.h>
 
 #include <array>
 #include <memory>
@@ -36,35 +37,31 @@ namespace viscoslide
   using namespace dealii;
 
   template <int dim>
-  class SurfaceMultigrid
+  class SurfaceMultigrid : public NewtonPreconditioner
   {
   public:
     // The levels for the grid of `shape` points (x fastest) of spacing dx:
     // halved while every count is even and at least 8, or the coarsest
-    // has no more than 1024 points.
+    // has no more than 1024 points. The load row of force control is sum_j
+    // tangent_j (du_j + d delta) dx^(dim-1) / force_scale.
     SurfaceMultigrid(Parameters::Substrate                    substrate,
                      double                                   thickness,
                      const ViscoelasticSolid                 &material,
                      double                                   nu,
                      const std::array<unsigned int, dim - 1> &shape,
-                     double                                   dx);
+                     double                                   dx,
+                     double                                   force_scale);
 
     void
     set_speed(double V);
 
-    // The Jacobian's diagonal W (weight) and, under force control, the
-    // load row's weights (the traction law's tangent) and scale: the row
-    // is sum_j tangent_j (du_j + d delta) dA / force_scale.
+    // The Jacobian's diagonal W, the tangent plus the dashpot, and under
+    // force control the load row.
     void
-    update(const Vector<double> &weight,
-           const Vector<double> &load_weight,
-           bool                  force,
-           double                dA,
-           double                force_scale);
+    update(const Vector<double> &tangent, double dashpot, bool force) override;
 
-    // dst ~ J^-1 src, both of the grid's size plus one (the approach).
     void
-    vmult(Vector<double> &dst, const Vector<double> &src) const;
+    vmult(Vector<double> &dst, const Vector<double> &src) const override;
 
     unsigned int
     n_levels() const
@@ -75,8 +72,8 @@ namespace viscoslide
   private:
     struct Level
     {
-      std::array<unsigned int, dim - 1>       shape;
-      std::unique_ptr<SurfaceCompliance<dim>> compliance;
+      std::array<unsigned int, dim - 1>        shape;
+      std::unique_ptr<PeriodicCompliance<dim>> compliance;
       // W, and Jacobi's damping over the diagonal of K + W.
       Vector<double> weight, inverse_diagonal;
     };
@@ -105,8 +102,9 @@ namespace viscoslide
 
     std::vector<Level> levels;
     // The modulus scaling the relaxed elastic operator (set_speed), and
-    // the window's length along x.
-    double scale = 1., window = 0.;
+    // the window's length along x; the load row's cell area and scale.
+    double       scale = 1., window = 0.;
+    const double dA, force_scale;
     // The coarsest operator, factorized; empty where too large, then
     // smoothing alone stands in for it.
     LAPACKFullMatrix<double> coarsest;

@@ -1,40 +1,31 @@
 // The boundary-element solver of the steady sliding state
 // (Sliding/Solver = boundary-element; doc/boundary_element.md).
 //
-// Only the top surface is discretised: the vertical displacement u_j at
-// the points x_j of a uniform periodic grid centred on the indenter's
-// apex, a line of points in plane strain (dim = 2), a plane of them in 3D
-// (the indenter then the body of revolution of its profile); or, in plane
-// strain on the half-plane, at the centres of the cells of a grid graded
-// about the contact edges (Boundary element/Grid = graded;
-// graded_compliance.h), which follows the edges and starts from the JKR
-// contact at the Target load. In the
-// indenter's frame the steady state solves
+// Only the top surface is discretised, on a surface grid (surface_grid.h:
+// periodic, isolated or graded), which owns everything that depends on
+// where its points are. In the indenter's frame the steady state solves
 //     u = C q(g),   g_j = eps + h(x_j) - delta - u_j,
-// with C the viscoelastic surface compliance at the sliding speed
-// (compliance.h) and q the traction law, plus, under force control, the
-// load equation integral of -q = F_n with delta unknown. Newton's method
-// (newton.h) solves it, its linear systems by GMRES, preconditioned in 2D
-// by the dense Jacobian of the points near the contact
-// (window_preconditioner.h), in 3D by multigrid on the surface grid
-// (multigrid_preconditioner.h); the approach
-// is a sequence of relaxed (V = 0) states, the speeds and loads follow by
-// continuation, as in the finite-element steady-state solver.
+// with C the grid's viscoelastic surface compliance at the sliding speed
+// and q the traction law, plus, under force control, the load equation
+// integral of -q = F_n with delta unknown. This class is the same for
+// every grid: Newton's method (newton.h) with its linear systems by GMRES
+// on the grid's preconditioner, where the grid has motions of its own
+// (the graded grid's contact edges) with them among the unknowns; the
+// start (the approach, a sequence of relaxed states, or the JKR contact
+// where the grid follows the contact); the continuation in speed and load.
 //
-// The implementation: solver.cc (grid, Newton, continuation, the run),
-// output.cc (surface quantities and profiles).
+// The implementation: solver.cc (the run, the residual, GMRES, Newton),
+// moving_grid.cc (Newton with the grid's motions), continuation.cc
+// (steps in approach, speed and load), start.cc (the approach and the JKR
+// start), output.cc (the profile).
 #ifndef viscoslide_boundary_element_solver_h
 #define viscoslide_boundary_element_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <viscoslide/boundary_element/compliance.h>
-#include <viscoslide/boundary_element/graded_compliance.h>
-#include <viscoslide/boundary_element/isolated_compliance.h>
-#include <viscoslide/boundary_element/multigrid_preconditioner.h>
+#include <viscoslide/boundary_element/surface_grid.h>
 #include <viscoslide/case.h>
 #include <viscoslide/indenter.h>
 #include <viscoslide/interaction_law.h>
@@ -46,7 +37,6 @@
 #include <viscoslide/steady_sliding.h>
 #include <viscoslide/steady_state_table.h>
 
-#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -55,6 +45,13 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  // The grid a case asks for: graded (Boundary element/Grid), the
+  // isolated window of the 3D half-space, else periodic. [solver.cc]
+  template <int dim>
+  std::unique_ptr<SurfaceGrid<dim>>
+  make_surface_grid(const CaseParts &parts, ConditionalOStream &out);
+
+
   template <int dim>
   class BoundaryElementSolver : public SteadySliding
   {
@@ -62,14 +59,14 @@ namespace viscoslide
     explicit BoundaryElementSolver(CaseParts &parts);
     ~BoundaryElementSolver();
 
-    // The approach to Loading/Target load (or to the Final approach), then
-    // the stations; writes steady_state.csv, continuation.csv and the
-    // profiles. Throws std::runtime_error if a station was missed.
-    // [solver.cc]
+    // The start (the approach to Loading/Target load or to the Final
+    // approach, or the JKR contact), then the stations; writes
+    // steady_state.csv, continuation.csv and the profiles. Throws
+    // std::runtime_error if a station was missed. [solver.cc]
     void
     run();
 
-    // SteadySliding [solver.cc]
+    // SteadySliding [continuation.cc]
     bool
     continue_to(double                       V_hat,
                 const std::function<void()> &on_converged) override;
@@ -84,7 +81,7 @@ namespace viscoslide
     double
     approach() const override
     {
-      return delta;
+      return state.delta;
     }
     const SurfaceQuantities &
     quantities() const override
@@ -92,7 +89,10 @@ namespace viscoslide
       return last_quantities;
     }
     double
-    dissipation_rate() const override;
+    dissipation_rate() const override
+    {
+      return grid->dissipation_rate(traction);
+    }
     unsigned int
     newton_iterations() const override
     {
@@ -101,7 +101,7 @@ namespace viscoslide
     unsigned long
     n_unknowns() const override
     {
-      return u.size() + (control.force_controlled ? 1 : 0);
+      return state.u.size() + (control.force_controlled ? 1 : 0);
     }
     bool
     force_control() const override
@@ -117,134 +117,59 @@ namespace viscoslide
     }
 
   private:
-    // The grid for the period this speed needs (Boundary element/Period):
-    // rebuilt when it must grow or can shrink four-fold, the state carried
-    // over at equal x. In 3D the period across the track is the Domain
-    // width. [solver.cc]
-    void
-    fit_period(double V_hat);
-    void
-    make_grid(const std::array<unsigned int, dim - 1> &shape);
-    // The graded grid of cells between `boundaries`, made for contact
-    // edges at `edges`, the state's gaps interpolated onto it (from x -
-    // shift(x) if given). [solver.cc]
-    void
-    make_graded_grid(const std::vector<double>           &new_boundaries,
-                     const std::pair<double, double>     &edges,
-                     const std::function<double(double)> &shift = {});
-    // The graded grid's cells between `new_boundaries`, made for contact
-    // edges at `edges`, with the gaps `gap` (delta kept): the compliance
-    // `kept` if given (made for these boundaries), else a new one.
-    // [solver.cc]
-    void
-    set_graded_cells(const std::vector<double>       &new_boundaries,
-                     const std::pair<double, double> &edges,
-                     const Vector<double>            &gap,
-                     std::unique_ptr<Compliance>      kept = {});
-    // make_graded_grid about contact edges at trail and lead, the grid
-    // reaching margin_factor times the contact's width (at least 50 eps)
-    // beyond each. [solver.cc]
-    void
-    make_graded_grid_about(double                               trail,
-                           double                               lead,
-                           const std::function<double(double)> &shift = {});
-    // The predictor of a continuation step on the graded grid: the edges
-    // extrapolated from the two steps before (`ratio` the step's length
-    // over the last one's), a grid about them, and the state's gaps moved
-    // with the edges, so that each edge's adhesive zone arrives whole
-    // where it is predicted (the secant of u at fixed x would smear it).
-    // [solver.cc]
-    void
-    predict_graded_grid(const std::pair<double, double> &edges,
-                        const std::pair<double, double> &edges_before,
-                        double                           ratio);
-    // Whether the contact edges of the present state lie where the
-    // graded grid's cells are finest (and no traction reaches its ends);
-    // if not, or `always`, a new grid about them. Returns whether it made
-    // one. [solver.cc]
-    bool
-    refit_graded_grid(bool always);
-    // The graded grid's start: the JKR contact of the relaxed solid at the
-    // Target load, solved with the traction law. [solver.cc]
-    void
-    start_from_jkr_contact();
-    // The start's continuation in the traction law's range
-    // (start_from_jkr_contact): the law of the case with range `range`
-    // and the same dgamma; the case's own at eps. [solver.cc]
-    void
-    set_law_range(double range);
-    // The gap at which `law`, of range `range`, gives a traction q, on
-    // its branch from the repulsive wall to its peak (the peak's gap for q
-    // above the peak), as a function of q; `law` must outlive it.
-    // [solver.cc]
-    std::function<double(double)>
-    gap_for_traction(const InteractionLaw &law, double range) const;
-    const InteractionLaw &
-    traction_law() const
-    {
-      return ranged_law ? *ranged_law : law;
-    }
-    // The Tabor parameter up to which Newton's method converges from the
-    // discrete JKR contact.
-    static constexpr double start_tabor_parameter = 8;
-    // In 3D a half-space is the isolated contact's (isolated_compliance.h),
-    // a layer periodic. [solver.cc]
-    bool
-    isolated_half_space() const;
-    // The compliance (and the multigrid's) at sliding speed V. [solver.cc]
-    void
-    set_compliance_speed(double V);
-    // The preconditioner for the present Jacobian. [solver.cc]
-    void
-    update_preconditioner();
+    // --- Newton's method [solver.cc]
 
-    // Newton's method (on a graded grid, then with the edges among the
-    // unknowns), then, if `relax`, pseudo-transient relaxation, at the
+    // Newton's method (then, where the grid has motions, with them among
+    // the unknowns), then, if `relax`, pseudo-transient relaxation, at the
     // present speed, control and delta or load; on failure the state is
-    // restored. Returns the iterations or -1. A graded grid is made anew
-    // about the edges found until they lie where it is finest.
-    // [solver.cc]
+    // restored. Returns the iterations or -1. A grid that follows the
+    // contact is made anew about the edges found until they lie where it
+    // is finest.
     int
     solve(bool relax = true);
     int
     solve_on_grid(bool relax);
-    // Newton's method on the graded grid with the two contact edges among
-    // the unknowns (edge_following.cc): the grid moves with them, each
-    // edge's cells and gaps translated, the cells between stretched, and
-    // one equation per edge holds the gap at the contact threshold where
-    // the grid is finest. An edge's adhesive zone then moves as a whole,
-    // as one unknown, instead of through the cells of a fixed grid, where
-    // its translation is nearly singular (a neutral mode of a wide
-    // contact) and non-linear (the cells grow away from the edge). Starts
-    // from a grid recentred on the state's edges. Returns the iterations
-    // or -1, the state then restored.
-    int
-    solve_following_edges();
-    NewtonProblem
-    edge_following_problem();
-    void
-    assemble_following_edges(bool with_matrix);
-    void
-    compute_edge_following_update();
-    // The boundaries `from`, made for edges `from_edges`, moved with the
-    // edges by d_trail and d_lead (edge_shift, grid.h).
-    // [edge_following.cc]
-    static std::vector<double>
-    moved_boundaries(const std::vector<double>       &from,
-                     const std::pair<double, double> &from_edges,
-                     double                           d_trail,
-                     double                           d_lead);
     NewtonProblem
     newton_problem();
+    // The gaps, tractions and their tangent, the residual u - C q with the
+    // load equation last; with the matrix, the residual's rounding error
+    // and the preconditioner.
     void
     assemble(bool with_matrix);
     double
     residual_norm() const;
     void
     compute_update();
-    // GMRES on the Jacobian (and the load row) for `rhs`. [solver.cc]
+    // GMRES on the Jacobian (and the load row) for `rhs`.
     void
     solve_linearized(const Vector<double> &rhs, Vector<double> &solution);
+    // The measures of the present state.
+    void
+    update_quantities();
+
+    // --- Newton's method with the grid's motions [moving_grid.cc]
+
+    // The grid moves with its motions (the graded grid: each edge's cells
+    // and gaps translated, the cells between stretched), and one equation
+    // per motion (its pin) holds its edge where the grid is finest. An
+    // edge's adhesive zone then moves as a whole, as one unknown, instead
+    // of through the cells of a fixed grid, where its translation is nearly
+    // singular (a neutral mode of a wide contact) and non-linear (the cells
+    // grow away from the edge). Starts from a grid recentred on the state's
+    // edges. Returns the iterations or -1, the state then restored.
+    int
+    solve_moving_grid();
+    NewtonProblem
+    moving_grid_problem();
+    // The residual's derivatives along the motions (with the matrix) and
+    // the pins' misfits.
+    void
+    assemble_moving_grid(bool with_matrix);
+    void
+    compute_moving_grid_update();
+
+    // --- Continuation [continuation.cc]
+
     // Steps the control parameter from its present value to `to` through
     // set(value), in steps no larger than `step` (halved where Newton
     // fails, down to `min_step`), calling on_converged after each and
@@ -258,30 +183,62 @@ namespace viscoslide
       const std::function<void(double)> &set,
       const std::function<void()>       &on_converged,
       const std::function<bool()>       &done = [] { return false; });
+    // The secant predictor of a step `ratio` times as long as the one
+    // before, from the state at its start (on the grid of generation_at)
+    // and the one before.
     void
-    approach_phase();
-    void
-    hold_target_load(bool                                            reached,
-                     const std::function<void(const std::string &)> &add_row);
-    void
-    retract(const std::function<void(const std::string &)> &add_row);
+    predict(const SurfaceState &at_state,
+            unsigned int        generation_at,
+            const SurfaceState &before,
+            double              ratio);
+    // delta to delta_hat = `to` in Approach increments, cut down to the
+    // Minimum approach increment where a step fails.
     void
     move_indenter(
       double                       to,
       const std::string           &phase,
       const std::function<void()> &report,
       const std::function<bool()> &done = [] { return false; });
+    void
+    set_speed(double V_hat);
 
-    // The traction q_j, its tangent dq/dg and the gaps. [output.cc]
+    // --- The start [start.cc]
+
+    using AddRow = std::function<void(const std::string &)>;
+    // The approach, or the JKR start where the grid follows the contact.
     void
-    update_quantities();
-    // In 3D: the area where the gap is below gc. [output.cc]
-    double
-    contact_area(double gc) const;
-    // In 3D: the map of the surface about the contact as VTK image data.
-    // [output.cc]
+    start();
     void
-    write_map(const std::string &path, const std::string &what) const;
+    approach_phase(const AddRow &add_row);
+    void
+    hold_target_load(bool reached, const AddRow &add_row);
+    void
+    retract(const AddRow &add_row);
+    // The JKR contact of the relaxed solid at the Target load, solved with
+    // the traction law: a grid about it, the discrete JKR contact of the
+    // grid's compliance, then the law's range shrunk to eps.
+    void
+    start_from_jkr_contact();
+    void
+    shrink_law_range(double range);
+    // The start's continuation in the traction law's range: the law of
+    // the case with range `range` and the same dgamma; the case's own at
+    // eps.
+    void
+    set_law_range(double range);
+    // The gap at which `law`, of range `range`, gives a traction q, on
+    // its branch from the repulsive wall to its peak (the peak's gap for q
+    // above the peak), as a function of q; `law` must outlive it.
+    std::function<double(double)>
+    gap_for_traction(const InteractionLaw &law, double range) const;
+    const InteractionLaw &
+    traction_law() const
+    {
+      return ranged_law ? *ranged_law : law;
+    }
+    // The Tabor parameter up to which Newton's method converges from the
+    // discrete JKR contact.
+    static constexpr double start_tabor_parameter = 8;
 
     const Parameters::AllParameters &prm;
     MPI_Comm                         comm;
@@ -292,73 +249,32 @@ namespace viscoslide
     const InteractionLaw            &law;
     std::unique_ptr<InteractionLaw>  ranged_law;
     double                           law_range; // eps but in the start
-    const Indenter                  &indenter;
     OutputWriter                    &writer;
     SteadyStateTable                &steady_state_table;
     Progress                        *progress;
 
-    // The grid: shape = (n_x) or (n_y, n_x) points, x_j = (j mod n_x -
-    // n_x/2) dx and in 3D y_j = (j div n_x - n_y/2) dx, each standing for
-    // the area dA = dx^(dim-1); the indenter's h and dh/dx there; and the
-    // solid its compliance describes: during the approach of a half-plane
-    // the block of Domain height on a rigid base, as in the finite
-    // elements (doc/boundary_element.md, Approach). The graded grid:
-    // n_x cells between `boundaries`, x_j their centres, area_j their
-    // widths, made for the edges at grid_edges; dx its finest cell.
-    const double              dx, dA;
-    const bool                graded;
-    std::vector<double>       area, boundaries;
-    std::pair<double, double> grid_edges{0., 0.};
-    // The boundaries at grid_edges: the focus of each edge.
-    std::array<unsigned int, 2> focus{};
-    double                      margin_factor = 0.5;
-    // Counts the grids made, so that a secant predictor spans one grid.
-    unsigned int                      grid_generation = 0;
-    std::array<unsigned int, dim - 1> shape{};
-    Parameters::Substrate             substrate;
-    double                            thickness;
-    // periodic (SurfaceCompliance<dim>) or isolated (3D half-space)
-    std::unique_ptr<Compliance> compliance;
-    std::vector<double>         x, y, h, slope;
-
-    // The state.
-    Vector<double> u;
-    double         delta = 0;
-    double         V_hat = 0;
-    LoadControl    control;
+    std::unique_ptr<SurfaceGrid<dim>> grid;
+    SurfaceState                      state;
+    double                            V_hat = 0;
+    LoadControl                       control;
 
     // Newton's work: gaps, tractions (q, attraction > 0), their tangent,
     // the residual u - C q with the load equation last, the update, the
-    // iterate a line search starts from, the surface dashpot of relax().
-    Vector<double> gaps, traction, tangent, residual, update, u0;
-    double         delta0 = 0, dashpot = 0;
-    // The rounding error of residual_norm() at the last Jacobian (graded
-    // grid): Newton's method takes it as its tolerance where it is larger.
-    double         round_off = 0;
+    // iterate a line search starts from, the surface dashpot of relax()
+    // and its anchor; the rounding error of residual_norm() at the last
+    // Jacobian, which Newton's method takes as its tolerance where it is
+    // larger.
+    Vector<double> gaps, traction, tangent, residual, update;
+    SurfaceState   start_of_step;
+    double         dashpot = 0, round_off = 0;
     Vector<double> anchor;
-    // solve_following_edges(): the residual's derivative along each edge's
-    // motion, the gap equations' misfits, the edges' update, and the grid
-    // and gaps a line search starts from.
-    std::array<Vector<double>, 2> edge_columns;
-    std::array<double, 2>         pin_misfit{}, edge_update{};
-    std::vector<double>           boundaries0;
-    std::pair<double, double>     grid_edges0;
-    Vector<double>                gaps0;
-
-    // The preconditioner: the Jacobian of the window [first, first + m) of
-    // points near the contact, factorized, with the load equation bordered.
-    // GMRES on it gets slower as the iterate moves away from where it was
-    // made; it is renewed once the last GMRES cost more than the average
-    // per solve since it was made, factorization included (the renewal
-    // that minimises that average), or did not converge. The costs are
-    // counted work, not wall times [solver.cc].
-    // In 3D the multigrid of the grid, updated at every Jacobian.
-    class WindowPreconditioner;
-    std::unique_ptr<WindowPreconditioner>  preconditioner;
-    std::unique_ptr<SurfaceMultigrid<dim>> multigrid;
-    unsigned int                           solves_since_factorization = 0;
-    double work_since_factorization = 0., last_gmres_work = 0.;
-    bool   last_gmres_converged = true;
+    // solve_moving_grid(): the residual's derivative along each motion,
+    // the pins' misfits, the motions' update, and the grid and gaps a line
+    // search starts from.
+    std::vector<Vector<double>> motion_columns;
+    std::vector<double>         pin_misfit, motion_update;
+    std::shared_ptr<const typename SurfaceGrid<dim>::Placement> placement0;
+    Vector<double>                                              gaps0;
 
     // GMRES iterations and solves, for the statistics at the end.
     unsigned long gmres_iterations = 0, gmres_solves = 0;

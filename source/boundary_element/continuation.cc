@@ -1,0 +1,246 @@
+// BoundaryElementSolver: steps in approach, speed and load, each from the
+// equilibrium before with its secant predictor.
+#include <viscoslide/boundary_element/solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace viscoslide
+{
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::predict(const SurfaceState &at_state,
+                                      const unsigned int  generation_at,
+                                      const SurfaceState &before,
+                                      const double        ratio)
+  {
+    // The secant from the step before, then no predicted gap below the
+    // smaller of its present one and eps: a point that the step before
+    // drew into contact would otherwise be extrapolated deep into the
+    // repulsive wall (and without a step before, the contact moved with
+    // delta), where the traction is huge and Newton's method crawls back.
+    // On a grid made for this step (its predictor) the state is the grid's.
+    const bool secant = ratio != 0. && std::abs(ratio) <= 2;
+    if (secant && control.force_controlled)
+      state.delta += ratio * (at_state.delta - before.delta);
+    const auto &h = grid->at().h;
+    for (unsigned int j = 0;
+         generation_at == grid->generation() && j < state.u.size();
+         ++j)
+      {
+        if (secant)
+          state.u[j] += ratio * (at_state.u[j] - before.u[j]);
+        const double g_at = scales.eps + h[j] - at_state.delta - at_state.u[j];
+        state.u[j]        = std::min(state.u[j],
+                              scales.eps + h[j] - state.delta -
+                                std::min(g_at, scales.eps));
+      }
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::follow(const double from,
+                                     const double to,
+                                     const double step,
+                                     const double min_step,
+                                     const std::function<void(double)> &set,
+                                     const std::function<void()> &on_converged,
+                                     const std::function<bool()> &done)
+  {
+    double       at = from, size = step, at_before = 0;
+    SurfaceState before;
+    unsigned int generation_before = 0;
+    // A moving grid's contact edges at the step before, for their secant;
+    // on such a grid a shorter step is cheaper than the relaxation, which
+    // moves the edges by a fraction of eps per step.
+    const bool                moving = grid->follows_contact();
+    std::pair<double, double> edges_before;
+    bool                      have_edges_before = false;
+    while (at != to)
+      {
+        const bool         last     = std::abs(to - at) <= size * (1 + 1e-9);
+        const double       next     = last ? to : at + (to > at ? size : -size);
+        const SurfaceState at_state = state;
+        const unsigned int generation_at = grid->generation();
+        const auto         placement_at  = grid->placement();
+        const std::pair<double, double> edges_at{last_quantities.x_trail,
+                                                 last_quantities.x_lead};
+        set(next);
+        if (moving && have_edges_before)
+          grid->predict(edges_at,
+                        edges_before,
+                        (next - at) / (at - at_before),
+                        state);
+        const double ratio = generation_before == grid->generation() &&
+                                 before.u.size() == state.u.size()
+                               ? (next - at) / (at - at_before)
+                               : 0.;
+        predict(at_state, generation_at, before, ratio);
+        if (solve(!moving) >= 0)
+          {
+            at_before         = at;
+            before            = at_state;
+            generation_before = generation_at;
+            edges_before      = edges_at;
+            have_edges_before = moving;
+            at                = next;
+            on_converged();
+            if (done())
+              return true;
+            size = std::min(step, 2 * size);
+            continue;
+          }
+        if (placement_at)
+          grid->regrid(*placement_at, state);
+        state = at_state;
+        set(at);
+        size /= 2;
+        if (size < min_step)
+          return false;
+      }
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::set_speed(const double V)
+  {
+    V_hat = V;
+    grid->set_speed(V_hat * scales.eps / scales.tau_ref);
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::continue_to(
+    const double                 target,
+    const std::function<void()> &on_converged)
+  {
+    grid->fit_to_speed(std::max(V_hat, target), state);
+    // The factorization of the speed before stays a good preconditioner
+    // (it is renewed when GMRES needs too many iterations with it).
+    const auto set = [this, target](const double log_V) {
+      set_speed(std::abs(log_V - std::log(target)) < 1e-12 ? target
+                                                           : std::exp(log_V));
+    };
+    if (V_hat == 0)
+      {
+        // From the relaxed state: directly, or else from the speed whose
+        // relaxation length is a tenth of the grid spacing for the slowest
+        // arm (a spectrum's may be decades slower than the time unit of
+        // V_hat). A grid that follows the contact is about a contact
+        // thousands of eps wide, and the creep at its edges moves them by
+        // many cells in a direct jump, where Newton's method fails and the
+        // relaxation takes minutes: it starts slow.
+        if (!grid->follows_contact())
+          {
+            set(std::log(target));
+            if (solve() >= 0)
+              {
+                on_converged();
+                return true;
+              }
+          }
+        const double start = std::min(target,
+                                      0.1 * grid->spacing() /
+                                        (scales.eps / scales.tau_ref *
+                                         material.longest_relaxation_time()));
+        set(std::log(start));
+        if (solve() < 0)
+          {
+            set_speed(0);
+            return false;
+          }
+        on_converged();
+      }
+    // A line per step short of the target: from a slow start the
+    // continuation crosses decades before the first station.
+    const auto report = [&] {
+      if (V_hat != target)
+        pcout << "  continuation: V_hat " << V_hat << " on the way to "
+              << target << " (" << last_newton_iterations
+              << " Newton iterations)" << std::endl;
+      on_converged();
+    };
+    return follow(std::log(V_hat),
+                  std::log(target),
+                  std::log(prm.sliding.continuation_factor),
+                  1e-3,
+                  set,
+                  report);
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::continue_to_load(
+    const double                 target,
+    const std::function<void()> &on_converged)
+  {
+    double &parameter =
+      control.force_controlled ? control.target_force : state.delta;
+    const double distance = std::abs(target - parameter);
+    return follow(
+      parameter,
+      target,
+      distance / 10,
+      distance * 1e-4,
+      [&parameter](const double v) { parameter = v; },
+      on_converged);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::move_indenter(const double                 to,
+                                            const std::string           &phase,
+                                            const std::function<void()> &report,
+                                            const std::function<bool()> &done)
+  {
+    if (!follow(
+          state.delta,
+          to * scales.eps,
+          prm.loading.increment * scales.eps,
+          prm.loading.minimum_increment * scales.eps,
+          [this](const double d) { state.delta = d; },
+          report,
+          done))
+      throw std::runtime_error(
+        "the boundary-element solver failed in the " + phase +
+        " at delta_hat = " + CsvTable::format(approach() / scales.eps) +
+        " (Newton's method and the relaxation did not converge with "
+        "the Minimum approach increment)");
+  }
+
+
+  // The class is instantiated in solver.cc; here the members this file
+  // defines.
+#define VISCOSLIDE_INSTANTIATE(dim)                                       \
+  template void BoundaryElementSolver<dim>::predict(const SurfaceState &, \
+                                                    unsigned int,         \
+                                                    const SurfaceState &, \
+                                                    double);              \
+  template bool BoundaryElementSolver<dim>::follow(                       \
+    double,                                                               \
+    double,                                                               \
+    double,                                                               \
+    double,                                                               \
+    const std::function<void(double)> &,                                  \
+    const std::function<void()> &,                                        \
+    const std::function<bool()> &);                                       \
+  template void BoundaryElementSolver<dim>::set_speed(double);            \
+  template bool BoundaryElementSolver<dim>::continue_to(                  \
+    double, const std::function<void()> &);                               \
+  template bool BoundaryElementSolver<dim>::continue_to_load(             \
+    double, const std::function<void()> &);                               \
+  template void BoundaryElementSolver<dim>::move_indenter(                \
+    double,                                                               \
+    const std::string &,                                                  \
+    const std::function<void()> &,                                        \
+    const std::function<bool()> &);
+  VISCOSLIDE_INSTANTIATE(2)
+  VISCOSLIDE_INSTANTIATE(3)
+#undef VISCOSLIDE_INSTANTIATE
+} // namespace viscoslide

@@ -1,0 +1,347 @@
+#include <viscoslide/boundary_element/graded_grid.h>
+#include <viscoslide/boundary_element/grid.h>
+#include <viscoslide/boundary_element/window_preconditioner.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace viscoslide
+{
+  namespace
+  {
+    // The boundaries `from`, made for edges `from_edges`, moved with the
+    // edges by d_trail and d_lead (edge_shift, grid.h).
+    std::vector<double>
+    moved_boundaries(const std::vector<double>       &from,
+                     const std::pair<double, double> &from_edges,
+                     const double                     d_trail,
+                     const double                     d_lead)
+    {
+      const auto          shift = edge_shift(from_edges, d_trail, d_lead);
+      std::vector<double> moved(from);
+      for (double &b : moved)
+        b += shift(b);
+      return moved;
+    }
+  } // namespace
+
+
+  GradedGrid::GradedGrid(const Parameters::AllParameters &prm,
+                         const Scales                    &scales,
+                         const ViscoelasticSolid         &material,
+                         const Indenter                  &indenter,
+                         const double                     dx,
+                         ConditionalOStream              &out)
+    : SurfaceGrid<2>(dx)
+    , prm(prm)
+    , scales(scales)
+    , material(material)
+    , indenter(indenter)
+    , out(out)
+    , depth(prm.geometry.height() * scales.eps)
+    , window(
+        std::make_unique<WindowPreconditioner>(*this, scales.sigma_max, true))
+  {
+  }
+
+
+  GradedGrid::~GradedGrid() = default;
+
+
+  void
+  GradedGrid::set_speed(const double V)
+  {
+    speed = V;
+    compliance->set_speed(V);
+  }
+
+
+  void
+  GradedGrid::apply(const Vector<double> &q, Vector<double> &u) const
+  {
+    compliance->apply(q, u);
+  }
+
+
+  FullMatrix<double>
+  GradedGrid::block(const unsigned int first, const unsigned int m) const
+  {
+    return compliance->block(first, m);
+  }
+
+
+  double
+  GradedGrid::dissipation_rate(const Vector<double> &q) const
+  {
+    return compliance->dissipation_rate(q);
+  }
+
+
+  NewtonPreconditioner &
+  GradedGrid::preconditioner()
+  {
+    return *window;
+  }
+
+
+  std::shared_ptr<const SurfaceGrid<2>::Placement>
+  GradedGrid::placement() const
+  {
+    return std::make_shared<Cells>(cells);
+  }
+
+
+  void
+  GradedGrid::regrid(const Placement &p, SurfaceState &state)
+  {
+    const auto &c = dynamic_cast<const Cells &>(p);
+    make(c.boundaries, c.edges, state);
+  }
+
+
+  void
+  GradedGrid::place(const Placement      &p,
+                    const Vector<double> &gaps,
+                    SurfaceState         &state)
+  {
+    const auto &c = dynamic_cast<const Cells &>(p);
+    set_cells(c.boundaries, c.edges, gaps, state);
+  }
+
+
+  void
+  GradedGrid::place_about(const double  trail,
+                          const double  lead,
+                          SurfaceState &state)
+  {
+    make_about(trail, lead, state);
+  }
+
+
+  void
+  GradedGrid::make(const std::vector<double>           &new_boundaries,
+                   const std::pair<double, double>     &edges,
+                   SurfaceState                        &state,
+                   const std::function<double(double)> &shift)
+  {
+    // The state carried over as its gaps; the first grid from u = 0.
+    const auto         &x = points.x;
+    std::vector<double> old_gap(x.size());
+    for (unsigned int j = 0; j < x.size(); ++j)
+      old_gap[j] = scales.eps + points.h[j] - state.delta - state.u[j];
+    const unsigned int n = new_boundaries.size() - 1;
+    Vector<double>     gap(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        // Linear between the old points, beyond them the nearer end's.
+        const double centre = 0.5 * (new_boundaries[j] + new_boundaries[j + 1]);
+        const double from   = shift ? centre - shift(centre) : centre;
+        const auto   k = std::upper_bound(x.begin(), x.end(), from) - x.begin();
+        if (x.empty())
+          gap[j] = scales.eps + indenter.profile(centre) - state.delta;
+        else if (k == 0)
+          gap[j] = old_gap[0];
+        else if (k == long(x.size()))
+          gap[j] = old_gap[x.size() - 1];
+        else
+          {
+            const double t = (from - x[k - 1]) / (x[k] - x[k - 1]);
+            gap[j]         = (1 - t) * old_gap[k - 1] + t * old_gap[k];
+          }
+      }
+    set_cells(new_boundaries, edges, gap, state);
+    ++n_generation;
+    out << "Graded boundary-element grid: " << n << " cells, " << dx
+        << " eps at the contact edges x = " << edges.first / scales.eps << ", "
+        << edges.second / scales.eps << " eps, window "
+        << cells.boundaries.front() / scales.eps << " to "
+        << cells.boundaries.back() / scales.eps << " eps" << std::endl;
+  }
+
+
+  void
+  GradedGrid::set_cells(const std::vector<double>       &new_boundaries,
+                        const std::pair<double, double> &edges,
+                        const Vector<double>            &gap,
+                        SurfaceState                    &state)
+  {
+    cells.boundaries     = new_boundaries;
+    cells.edges          = edges;
+    const auto        &b = cells.boundaries;
+    const unsigned int n = b.size() - 1;
+    // The window preconditioner refers to the compliance it was made with.
+    window->reset();
+    compliance = std::make_unique<GradedCompliance>(material,
+                                                    prm.material.poisson_ratio,
+                                                    b,
+                                                    depth);
+    compliance->set_speed(speed);
+    points.x.resize(n);
+    points.y.assign(n, 0.);
+    points.h.resize(n);
+    points.slope.resize(n);
+    points.area.resize(n);
+    state.u.reinit(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const double x  = 0.5 * (b[j] + b[j + 1]);
+        points.x[j]     = x;
+        points.area[j]  = b[j + 1] - b[j];
+        points.h[j]     = indenter.profile(x);
+        points.slope[j] = indenter.slope(x);
+        state.u[j]      = scales.eps + points.h[j] - state.delta - gap[j];
+      }
+    // The boundaries at the two edges (graded_boundaries places them).
+    for (unsigned int e = 0; e < 2; ++e)
+      {
+        const double at = e == 0 ? edges.first : edges.second;
+        focus[e]        = std::lower_bound(b.begin(), b.end(), at) - b.begin();
+      }
+  }
+
+
+  void
+  GradedGrid::make_about(const double                         trail,
+                         const double                         lead,
+                         SurfaceState                        &state,
+                         const std::function<double(double)> &shift)
+  {
+    const double margin =
+      std::max(margin_factor * (lead - trail), 50 * scales.eps);
+    make(graded_boundaries(
+           trail, lead, dx, prm.boundary_element.grading_ratio, margin),
+         {trail, lead},
+         state,
+         shift);
+  }
+
+
+  bool
+  GradedGrid::follow(const SurfaceQuantities &q,
+                     const Vector<double>    &traction,
+                     const bool               always,
+                     SurfaceState            &state)
+  {
+    const unsigned int n     = size();
+    const double       ratio = prm.boundary_element.grading_ratio;
+    // Where the cells are at most 1.5 times the finest.
+    const double tolerance = 0.5 * dx / (ratio - 1);
+    const bool   loaded_ends =
+      std::max(std::abs(traction[0]), std::abs(traction[n - 1])) >
+      1e-4 * scales.sigma_max;
+    if (loaded_ends)
+      margin_factor *= 2;
+    if (!always && !loaded_ends &&
+        std::abs(q.x_trail - cells.edges.first) <= tolerance &&
+        std::abs(q.x_lead - cells.edges.second) <= tolerance)
+      return false;
+    make_about(q.x_trail, q.x_lead, state);
+    return true;
+  }
+
+
+  void
+  GradedGrid::predict(const std::pair<double, double> &edges,
+                      const std::pair<double, double> &edges_before,
+                      const double                     ratio,
+                      SurfaceState                    &state)
+  {
+    // Each edge's adhesive zone moved with its edge, so that it arrives
+    // whole where it is predicted (the secant of u at fixed x would smear
+    // it over cells far coarser than it).
+    if (!(std::abs(ratio) <= 2) || edges.second <= edges.first)
+      return;
+    const double trail =
+                   edges.first + ratio * (edges.first - edges_before.first),
+                 lead =
+                   edges.second + ratio * (edges.second - edges_before.second);
+    if (!(lead > trail))
+      return;
+    const auto shift =
+      edge_shift(edges, trail - edges.first, lead - edges.second);
+    make_about(trail, lead, state, shift);
+  }
+
+
+  bool
+  GradedGrid::prepare_motions(const SurfaceQuantities &q, SurfaceState &state)
+  {
+    // The grid about the edges of the start, so that the gap equations hold
+    // there: follow() refits the grid only when an edge strays from its
+    // focus by more than 0.5 dx/(ratio - 1), where the gap equations would
+    // ask the zone to move by tens of cells against the grid.
+    if (!(q.x_lead > q.x_trail))
+      return false; // no contact
+    if (std::abs(q.x_trail - cells.edges.first) > 0.25 * dx ||
+        std::abs(q.x_lead - cells.edges.second) > 0.25 * dx)
+      make_about(q.x_trail, q.x_lead, state);
+    return true;
+  }
+
+
+  void
+  GradedGrid::move(const Placement           &from,
+                   const std::vector<double> &d,
+                   const Vector<double>      &gaps,
+                   SurfaceState              &state)
+  {
+    const auto &c = dynamic_cast<const Cells &>(from);
+    set_cells(moved_boundaries(c.boundaries, c.edges, d[0], d[1]),
+              {c.edges.first + d[0], c.edges.second + d[1]},
+              gaps,
+              state);
+  }
+
+
+  std::unique_ptr<SurfaceGrid<2>>
+  GradedGrid::moved(const Placement           &from,
+                    const std::vector<double> &d,
+                    const Vector<double>      &gaps,
+                    SurfaceState              &state) const
+  {
+    auto grid =
+      std::make_unique<GradedGrid>(prm, scales, material, indenter, dx, out);
+    grid->speed = speed;
+    grid->move(from, d, gaps, state);
+    return grid;
+  }
+
+
+  std::vector<std::pair<unsigned int, double>>
+  GradedGrid::pin(const unsigned int k) const
+  {
+    if (focus[0] < 1 || focus[1] >= size() || focus[1] <= focus[0])
+      return {};
+    return {{focus[k] - 1, 0.5}, {focus[k], 0.5}};
+  }
+
+
+  // The ends are their own neighbours (no traction reaches them), and the
+  // distance to the next point is its own.
+  unsigned int
+  GradedGrid::next(const unsigned int j) const
+  {
+    return std::min(j + 1, size() - 1);
+  }
+
+
+  unsigned int
+  GradedGrid::previous(const unsigned int j) const
+  {
+    return j > 0 ? j - 1 : 0u;
+  }
+
+
+  double
+  GradedGrid::distance_to_next(const unsigned int j) const
+  {
+    return points.x[next(j)] - points.x[j];
+  }
+
+
+  double
+  GradedGrid::distance_across(const unsigned int j) const
+  {
+    return points.x[next(j)] - points.x[previous(j)];
+  }
+} // namespace viscoslide

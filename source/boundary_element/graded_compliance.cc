@@ -58,17 +58,16 @@ namespace viscoslide
     , depth(depth)
     , x(n)
     , w(n)
-    , retardation(creep_retardations(material, nu))
+    , creep(material, nu)
     , G(n, n)
+    , decay(creep.retardations.size())
+    , wake(creep.retardations.size())
   {
     for (unsigned int j = 0; j < n; ++j)
       {
         w[j] = s[j + 1] - s[j];
         x[j] = 0.5 * (s[j] + s[j + 1]);
       }
-    inverse_glassy = 1.;
-    for (const auto &[theta, c] : retardation)
-      inverse_glassy -= c;
     const double log_depth = std::log(depth);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
@@ -79,84 +78,87 @@ namespace viscoslide
 
 
   void
-  GradedCompliance::effective_traction_map(
-    FullMatrix<double>               &Q,
-    std::vector<std::vector<double>> &edges) const
-  {
-    Q.reinit(n, n);
-    for (unsigned int j = 0; j < n; ++j)
-      Q(j, j) = inverse_glassy;
-    edges.assign(retardation.size(), {});
-    std::vector<double> e(n), m(n), R(n);
-    for (unsigned int r = 0; r < retardation.size(); ++r)
-      {
-        const auto [theta, c] = retardation[r];
-        const double L        = V * theta;
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            // 1 - e_j and m_j without cancellation for L >> w_j.
-            const double one_minus_e = L > 0 ? -std::expm1(-w[j] / L) : 1.;
-            e[j]                     = 1. - one_minus_e;
-            m[j]                     = L > 0 ? L / w[j] * one_minus_e : 0.;
-          }
-        // R holds the row of E_j+1 (E as a combination of the q_k, k > j)
-        // while row j of Q is made; then becomes E_j's.
-        std::fill(R.begin(), R.end(), 0.);
-        for (unsigned int j = n; j-- > 0;)
-          {
-            Q(j, j) += c * (1. - m[j]);
-            if (m[j] > 0)
-              for (unsigned int k = j + 1; k < n; ++k)
-                Q(j, k) += c * m[j] * R[k];
-            for (unsigned int k = j + 1; k < n; ++k)
-              R[k] *= e[j];
-            R[j] = 1. - e[j];
-          }
-        if (L > 0)
-          edges[r] = R;
-      }
-  }
-
-
-  void
   GradedCompliance::set_speed(const double speed)
   {
     if (speed == V)
       return;
     V = speed;
-    effective_traction_map(Q, edge);
-    // The wake behind s_0 of each retardation: its displacement at x_i
-    // per unit edge value, (2/pi) int_0^inf ln(H/(d + t)) e^{-t/L} dt,
-    // d = x_i - s_0.
-    wake.assign(retardation.size(), {});
-    for (unsigned int r = 0; r < retardation.size(); ++r)
-      if (!edge[r].empty())
-        {
-          const auto [theta, c] = retardation[r];
-          const double L        = V * theta;
-          wake[r].resize(n);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const double d = x[i] - s[0];
-              wake[r][i] =
-                c * 2. / M_PI * L *
-                (std::log(depth / d) - scaled_exponential_integral(d / L));
-            }
-        }
+    // Each retardation's decay over each cell, and the wake behind s_0:
+    // its displacement at x_i per unit edge value, (2/pi) int_0^inf
+    // ln(H/(d + t)) e^{-t/L} dt, d = x_i - s_0, for every retardation that
+    // creeps (V > 0).
+    for (unsigned int r = 0; r < creep.retardations.size(); ++r)
+      {
+        const auto [theta, c] = creep.retardations[r];
+        const double L        = V * theta;
+        decay[r].resize(n);
+        for (unsigned int j = 0; j < n; ++j)
+          decay[r][j] = CellDecay(w[j], L);
+        wake[r].clear();
+        if (!(L > 0))
+          continue;
+        wake[r].resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double d = x[i] - s[0];
+            wake[r][i] =
+              c * 2. / M_PI * L *
+              (std::log(depth / d) - scaled_exponential_integral(d / L));
+          }
+      }
     formed = false;
     C.reinit(0, 0);
   }
 
 
   void
+  GradedCompliance::effective_traction(const double        *q,
+                                       Vector<double>      &q_eff,
+                                       std::vector<double> &edge) const
+  {
+    q_eff.reinit(n);
+    for (unsigned int j = 0; j < n; ++j)
+      q_eff[j] = creep.inverse_glassy * q[j];
+    edge.resize(creep.retardations.size());
+    for (unsigned int r = 0; r < creep.retardations.size(); ++r)
+      {
+        const auto cell =
+          [&d = decay[r]](const unsigned int j) -> const CellDecay & {
+          return d[j];
+        };
+        edge[r] =
+          smear_row(q, n, cell, creep.retardations[r].second, q_eff.begin());
+      }
+  }
+
+
+  void
   GradedCompliance::form_matrix() const
   {
+    // C = G Q + sum_r wake_r (x) E0_r, Q the effective-traction map (its
+    // column k the smeared unit traction of cell k), E0_r the row that
+    // gives the edge value of retardation r.
+    FullMatrix<double>               Q(n, n);
+    std::vector<std::vector<double>> edge_row(creep.retardations.size(),
+                                              std::vector<double>(n));
+    Vector<double>                   unit(n), column;
+    std::vector<double>              edge;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        unit[k] = 1.;
+        effective_traction(unit.begin(), column, edge);
+        unit[k] = 0.;
+        for (unsigned int j = 0; j < n; ++j)
+          Q(j, k) = column[j];
+        for (unsigned int r = 0; r < edge.size(); ++r)
+          edge_row[r][k] = edge[r];
+      }
     C.reinit(n, n);
     G.mmult(C, Q);
-    for (unsigned int r = 0; r < retardation.size(); ++r)
+    for (unsigned int r = 0; r < wake.size(); ++r)
       for (unsigned int i = 0; i < wake[r].size(); ++i)
         for (unsigned int k = 0; k < n; ++k)
-          C(i, k) += wake[r][i] * edge[r][k];
+          C(i, k) += wake[r][i] * edge_row[r][k];
     formed = true;
   }
 
@@ -170,18 +172,13 @@ namespace viscoslide
         C.vmult(u, q);
         return;
       }
-    Vector<double> q_eff(n);
-    Q.vmult(q_eff, q);
+    Vector<double>      q_eff;
+    std::vector<double> edge;
+    effective_traction(q.begin(), q_eff, edge);
     G.vmult(u, q_eff);
-    for (unsigned int r = 0; r < retardation.size(); ++r)
-      if (!wake[r].empty())
-        {
-          double E0 = 0;
-          for (unsigned int k = 0; k < n; ++k)
-            E0 += edge[r][k] * q[k];
-          for (unsigned int i = 0; i < n; ++i)
-            u[i] += wake[r][i] * E0;
-        }
+    for (unsigned int r = 0; r < wake.size(); ++r)
+      for (unsigned int i = 0; i < wake[r].size(); ++i)
+        u[i] += wake[r][i] * edge[r];
   }
 
 
@@ -196,36 +193,32 @@ namespace viscoslide
   }
 
 
-  double
-  GradedCompliance::dissipation_rate(const Vector<double> &q) const
+  void
+  GradedCompliance::creep_slope(const Vector<double> &q,
+                                Vector<double>       &slope) const
   {
+    slope.reinit(n);
     if (V <= 0)
-      return 0.;
-    // q_eff - q/E0* = Q q - q (E0* = 1).
-    Vector<double> creep(n);
-    Q.vmult(creep, q);
-    creep -= q;
-    // Each wake's edge value E_0.
-    std::vector<double> E0(retardation.size(), 0.);
-    for (unsigned int r = 0; r < retardation.size(); ++r)
-      for (unsigned int k = 0; k < edge[r].size(); ++k)
-        E0[r] += edge[r][k] * q[k];
-    double rate = 0;
+      return;
+    // The response to q_eff - q/E0* (E0* = 1), differentiated in closed
+    // form cell by cell, and its wakes'.
+    Vector<double>      creep_traction;
+    std::vector<double> edge;
+    effective_traction(q.begin(), creep_traction, edge);
+    creep_traction -= q;
     for (unsigned int i = 0; i < n; ++i)
       {
-        double slope = 0; // du/dx at x_i
         for (unsigned int j = 0; j < n; ++j)
-          slope -= 2. / M_PI * creep[j] *
-                   std::log(std::abs((x[i] - s[j]) / (x[i] - s[j + 1])));
-        for (unsigned int r = 0; r < retardation.size(); ++r)
-          if (!edge[r].empty())
+          slope[i] -= 2. / M_PI * creep_traction[j] *
+                      std::log(std::abs((x[i] - s[j]) / (x[i] - s[j + 1])));
+        for (unsigned int r = 0; r < wake.size(); ++r)
+          if (!wake[r].empty())
             {
-              const auto [theta, c] = retardation[r];
-              slope -= 2. / M_PI * c * E0[r] *
-                       scaled_exponential_integral((x[i] - s[0]) / (V * theta));
+              const auto [theta, c] = creep.retardations[r];
+              slope[i] -=
+                2. / M_PI * c * edge[r] *
+                scaled_exponential_integral((x[i] - s[0]) / (V * theta));
             }
-        rate -= V * q[i] * slope * w[i];
       }
-    return rate;
   }
 } // namespace viscoslide

@@ -70,10 +70,10 @@ namespace viscoslide
   }
 
 
-  double
-  GradedGrid::dissipation_rate(const Vector<double> &q) const
+  void
+  GradedGrid::creep_slope(const Vector<double> &q, Vector<double> &slope) const
   {
-    return compliance->dissipation_rate(q);
+    compliance->creep_slope(q, slope);
   }
 
 

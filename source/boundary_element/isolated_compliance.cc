@@ -91,50 +91,6 @@ namespace viscoslide
   } // namespace
 
 
-  // E*(s) = 1 + sum_a E_a s tau_a/(1 + s tau_a) has one root in each
-  // interval of the negative axis between its poles -1/tau_a (and between
-  // the nearest one and 0).
-  std::vector<std::pair<double, double>>
-  creep_retardations(const ViscoelasticSolid &material, const double nu)
-  {
-    std::vector<std::pair<double, double>> arms; // (tau_a, E_a*)
-    for (unsigned int a = 0; a < material.n_arms(); ++a)
-      if (material.arm_modulus(a) > 0)
-        arms.emplace_back(material.relaxation_time(a),
-                          material.arm_modulus(a) / (1. - nu * nu));
-    std::sort(arms.begin(), arms.end());
-    const auto E = [&](const double s) {
-      double e = 1.;
-      for (const auto &[tau, Ea] : arms)
-        e += Ea * s * tau / (1. + s * tau);
-      return e;
-    };
-    const auto dE = [&](const double s) {
-      double d = 0.;
-      for (const auto &[tau, Ea] : arms)
-        d += Ea * tau / ((1. + s * tau) * (1. + s * tau));
-      return d;
-    };
-    std::vector<std::pair<double, double>> result;
-    double right = 0.; // the interval's upper end
-    for (auto arm = arms.rbegin(); arm != arms.rend(); ++arm)
-      {
-        // E goes from -infinity just above the pole to E(right) > 0.
-        double lo = -1. / arm->first, hi = right;
-        for (int k = 0; k < 200; ++k)
-          {
-            const double mid       = 0.5 * (lo + hi);
-            (E(mid) < 0 ? lo : hi) = mid;
-          }
-        const double s     = 0.5 * (lo + hi);
-        const double theta = -1. / s;
-        result.emplace_back(theta, theta / dE(s));
-        right = -1. / arm->first;
-      }
-    return result;
-  }
-
-
   struct IsolatedCompliance::Convolution
   {
     explicit Convolution(const std::array<unsigned int, 2> &n)
@@ -148,11 +104,11 @@ namespace viscoslide
       , line_spectrum(fftw_alloc_complex(rows / 2 + 1))
     {
       forward =
-        fftw_plan_dft_r2c_2d(rows, columns, real, spectrum, FFTW_MEASURE);
+        fftw_plan_dft_r2c_2d(rows, columns, real, spectrum, FFTW_ESTIMATE);
       backward =
-        fftw_plan_dft_c2r_2d(rows, columns, spectrum, real, FFTW_MEASURE);
+        fftw_plan_dft_c2r_2d(rows, columns, spectrum, real, FFTW_ESTIMATE);
       line_forward =
-        fftw_plan_dft_r2c_1d(rows, line, line_spectrum, FFTW_MEASURE);
+        fftw_plan_dft_r2c_1d(rows, line, line_spectrum, FFTW_ESTIMATE);
     }
     ~Convolution()
     {
@@ -194,14 +150,11 @@ namespace viscoslide
                                          const double                       dx)
     : n(n)
     , dx(dx)
-    , retardation(creep_retardations(material, nu))
-    , wake(retardation.size())
+    , creep(material, nu)
+    , decay(creep.retardations.size())
+    , wake(creep.retardations.size())
     , convolution(std::make_unique<Convolution>(n))
   {
-    // 1/E*(s -> infinity) = 1 - sum_r c_r (1/E*(0) = 1 = E0*).
-    inverse_glassy = 1.;
-    for (const auto &[theta, c] : retardation)
-      inverse_glassy -= c;
     // Love's kernel at every offset of the window, arranged for the
     // circular convolution of the padded grid.
     Convolution &f = *convolution;
@@ -225,18 +178,18 @@ namespace viscoslide
   IsolatedCompliance::set_speed(const double speed)
   {
     V = speed;
-    // The wake beyond the window's trailing edge, for the retardations
-    // whose length reaches it from the contact: its influence on the
-    // window, a column source at the edge (column 0 of the padded grid)
-    // acting on the columns j >= 0 of the window.
-    Convolution &f      = *convolution;
-    const double window = n[1] * dx;
-    const int    n_y    = n[0];
-    wake.assign(retardation.size(), {});
-    for (unsigned int r = 0; r < retardation.size(); ++r)
+    // The wake beyond the window's trailing edge, for every retardation
+    // that creeps (V > 0): its influence on the window, a column source at
+    // the edge (column 0 of the padded grid) acting on the columns j >= 0
+    // of the window.
+    Convolution &f   = *convolution;
+    const int    n_y = n[0];
+    for (unsigned int r = 0; r < creep.retardations.size(); ++r)
       {
-        const double L = V * retardation[r].first;
-        if (!(L > window / 70))
+        const double L = V * creep.retardations[r].first;
+        decay[r]       = CellDecay(dx, L);
+        wake[r].clear();
+        if (!(L > 0))
           continue;
         std::fill(f.real, f.real + f.rows * f.columns, 0.);
         for (int m = 0; m < n_y; ++m)
@@ -260,48 +213,34 @@ namespace viscoslide
     const unsigned int n_x = n[1], n_y = n[0];
     q_eff.assign(q.begin(), q.end());
     for (double &v : q_eff)
-      v *= inverse_glassy;
-    edge.assign(retardation.size(), {});
-    for (unsigned int r = 0; r < retardation.size(); ++r)
+      v *= creep.inverse_glassy;
+    edge.assign(creep.retardations.size(), {});
+    for (unsigned int r = 0; r < creep.retardations.size(); ++r)
       {
-        const auto [theta, c] = retardation[r];
+        const double c = creep.retardations[r].second;
         if (!wake[r].empty())
           edge[r].assign(n_y, 0.);
-        // Each retardation smears q downstream over L = V theta. Love's
-        // kernel wants the smeared traction's mean over each cell: exact
-        // for q constant on each cell, and first order in L/dx when the
-        // retardation length is below the cell (a value at the cell's
-        // centre would lose the creep there altogether). T is the smeared
-        // traction at the cell's upstream edge, from the cells beyond it.
-        const double L     = V * theta;
-        const double decay = L > 0 ? std::exp(-dx / L) : 0.;
-        const double mean  = L > 0 ? L / dx * (1. - decay) : 0.;
+        const auto cell = [&d = decay[r]](unsigned int) -> const CellDecay & {
+          return d;
+        };
         for (unsigned int row = 0; row < n_y; ++row)
           {
-            const double *p = q.begin() + row * n_x;
-            double       *e = q_eff.data() + row * n_x;
-            double        T = 0.;
-            for (int i = n_x - 1; i >= 0; --i)
-              {
-                if (i + 1 < int(n_x))
-                  T = decay * T + (1. - decay) * p[i + 1];
-                e[i] += c * ((1. - mean) * p[i] + mean * T);
-              }
+            const double E0 = smear_row(
+              q.begin() + row * n_x, n_x, cell, c, q_eff.data() + row * n_x);
             if (!edge[r].empty())
-              edge[r][row] = c * (decay * T + (1. - decay) * p[0]);
+              edge[r][row] = c * E0;
           }
       }
   }
 
 
   void
-  IsolatedCompliance::apply(const Vector<double> &q, Vector<double> &u) const
+  IsolatedCompliance::convolve(const std::vector<double>              &q_eff,
+                               const std::vector<std::vector<double>> &edge,
+                               Vector<double>                         &u) const
   {
-    const unsigned int               n_x = n[1], n_y = n[0];
-    std::vector<double>              q_eff;
-    std::vector<std::vector<double>> edge;
-    effective_traction(q, q_eff, edge);
-    Convolution &f = *convolution;
+    const unsigned int n_x = n[1], n_y = n[0];
+    Convolution       &f = *convolution;
     std::fill(f.real, f.real + f.rows * f.columns, 0.);
     for (unsigned int row = 0; row < n_y; ++row)
       std::copy(q_eff.begin() + row * n_x,
@@ -322,6 +261,16 @@ namespace viscoslide
       std::copy(f.real + row * f.columns,
                 f.real + row * f.columns + n_x,
                 u.begin() + row * n_x);
+  }
+
+
+  void
+  IsolatedCompliance::apply(const Vector<double> &q, Vector<double> &u) const
+  {
+    std::vector<double>              q_eff;
+    std::vector<std::vector<double>> edge;
+    effective_traction(q, q_eff, edge);
+    convolve(q_eff, edge, u);
   }
 
 
@@ -353,21 +302,26 @@ namespace viscoslide
   }
 
 
-  double
-  IsolatedCompliance::dissipation_rate(const Vector<double> &q) const
+  void
+  IsolatedCompliance::creep_slope(const Vector<double> &q,
+                                  Vector<double>       &slope) const
   {
+    // u - C_0 q: the response to q_eff - q (E0* = 1), with the wake; by
+    // central differences along each row.
+    std::vector<double>              q_eff;
+    std::vector<std::vector<double>> edge;
+    effective_traction(q, q_eff, edge);
+    for (unsigned int j = 0; j < q.size(); ++j)
+      q_eff[j] -= q[j];
     Vector<double> u;
-    apply(q, u);
+    convolve(q_eff, edge, u);
     const unsigned int n_x = n[1], n_y = n[0];
-    double             sum = 0;
+    slope.reinit(q.size());
     for (unsigned int row = 0; row < n_y; ++row)
       for (unsigned int i = 1; i + 1 < n_x; ++i)
         {
           const unsigned int j = row * n_x + i;
-          sum += q[j] * (u[j + 1] - u[j - 1]) / (2 * dx);
+          slope[j]             = (u[j + 1] - u[j - 1]) / (2 * dx);
         }
-    // The traction q pulls (attraction > 0), the solid's surface moves by
-    // u towards the indenter: the work rate on the solid is -V q du/dx.
-    return -V * sum * dx * dx;
   }
 } // namespace viscoslide

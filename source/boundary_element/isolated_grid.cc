@@ -66,10 +66,11 @@ namespace viscoslide
   }
 
 
-  double
-  IsolatedGrid::dissipation_rate(const Vector<double> &q) const
+  void
+  IsolatedGrid::creep_slope(const Vector<double> &q,
+                            Vector<double>       &slope) const
   {
-    return compliance->dissipation_rate(q);
+    compliance->creep_slope(q, slope);
   }
 
 

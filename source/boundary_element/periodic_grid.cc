@@ -104,10 +104,11 @@ namespace viscoslide
 
 
   template <int dim>
-  double
-  PeriodicGrid<dim>::dissipation_rate(const Vector<double> &q) const
+  void
+  PeriodicGrid<dim>::creep_slope(const Vector<double> &q,
+                                 Vector<double>       &slope) const
   {
-    return compliance->dissipation_rate(q);
+    compliance->creep_slope(q, slope);
   }
 
 

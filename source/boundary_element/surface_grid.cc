@@ -15,6 +15,21 @@ namespace viscoslide
 
 
   template <int dim>
+  double
+  SurfaceGrid<dim>::dissipation_rate(const Vector<double> &q) const
+  {
+    Vector<double> slope;
+    creep_slope(q, slope);
+    double sum = 0;
+    for (unsigned int j = 0; j < size(); ++j)
+      sum += q[j] * slope[j] * points.area[j];
+    // The traction q pulls (attraction > 0), the solid's surface moves by
+    // u towards the indenter: the work rate on the solid is -V q du/dx.
+    return -speed * sum;
+  }
+
+
+  template <int dim>
   SurfaceQuantities
   SurfaceGrid<dim>::measure(const Vector<double> &gaps,
                             const Vector<double> &traction,

@@ -51,8 +51,8 @@ namespace viscoslide
     {
       return true;
     }
-    double
-    dissipation_rate(const Vector<double> &q) const override;
+    void
+    creep_slope(const Vector<double> &q, Vector<double> &slope) const override;
     NewtonPreconditioner &
     preconditioner() override;
 

@@ -4,23 +4,13 @@
 // carries traction, and the solid around it is infinite (no periodic
 // images, the far field at rest), as in the experiments.
 //
-// The creep of the Prony series is a sum of retardations: with s = i w,
-//     1/E*(s) = 1/Einf* + sum_r c_r/(1 + s theta_r),
-// its retardation times theta_r and weights c_r found from the arms'
-// moduli (one for each arm, the roots of E*(s) between the arms' poles).
-// A material point under the contact at x was at x + V t a time t ago
-// (sliding towards +x), so that the surface displacement is the elastic
-// response to an effective pressure,
-//     u = G * q_eff,  q_eff(x) = q(x)/Einf* + sum_r c_r int_0^inf
-//                                  exp(-xi/L_r) q(x + xi) dxi/L_r,
-// L_r = V theta_r: the traction q smeared downstream over each
-// retardation length. G is Love's influence of a uniform unit traction on
-// a square cell on the elastic half-space of unit modulus (Johnson,
-// Contact Mechanics, eq. 3.25), applied as a linear (not circular)
-// convolution by FFTs on a grid of twice the window in each direction
-// (zero padding). Love's kernel takes each cell's mean of q_eff, exact
-// for q constant on each cell (also where L_r is below the cell). The
-// smeared traction beyond the window's trailing edge is the exponential
+// The surface displacement is the elastic response to the effective
+// traction of the creep (creep.h), q constant on each square cell: u = G *
+// q_eff, G Love's influence of a uniform unit traction on a square cell on
+// the elastic half-space of unit modulus (Johnson, Contact Mechanics, eq.
+// 3.25), applied as a linear (not circular) convolution by FFTs on a grid
+// of twice the window in each direction (zero padding). The smeared
+// traction beyond the window's trailing edge is the exponential
 // e^{-(x_b - x)/L_r} times its value at the edge x_b, row by row: its
 // displacement in the window is a column source at the edge with a kernel
 // integrated once per speed (wake_tail), so that the wake is whole however
@@ -31,6 +21,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/creep.h>
 #include <viscoslide/material.h>
 
 #include <array>
@@ -62,12 +53,10 @@ namespace viscoslide
     void
     apply(const Vector<double> &q, Vector<double> &u) const override;
 
-    // The rate of work of the traction q on the solid, -V times the
-    // integral of q du/dx over the window (u = C q; du/dx by central
-    // differences): the conservative (instantaneous and relaxed) parts of
-    // C do no work in a steady state, so that this is the dissipation.
-    double
-    dissipation_rate(const Vector<double> &q) const override;
+    // d/dx of the response beyond the relaxed one, by central differences
+    // along x (0 at the window's ends, where no traction reaches).
+    void
+    creep_slope(const Vector<double> &q, Vector<double> &slope) const override;
 
   private:
     // q_eff of q on the window, and for each retardation whose wake
@@ -78,19 +67,24 @@ namespace viscoslide
                        std::vector<double>              &q_eff,
                        std::vector<std::vector<double>> &edge) const;
 
+    // u = G * q_eff plus the wakes of the edge values `edge`.
+    void
+    convolve(const std::vector<double>              &q_eff,
+             const std::vector<std::vector<double>> &edge,
+             Vector<double>                         &u) const;
     // Adds the displacement of the wakes beyond the trailing edge (their
     // edge values times their exponential tails) to the transformed
     // displacement of the convolution.
     void
     add_wake(const std::vector<std::vector<double>> &edge) const;
 
-    const std::array<unsigned int, 2>      n;
-    const double                           dx;
-    double                                 V = 0;
-    double                                 inverse_glassy; // 1/Einf*
-    std::vector<std::pair<double, double>> retardation;    // (theta_r, c_r)
-    // Per retardation, the transformed influence of its wake beyond the
-    // window (empty where the wake ends inside the window).
+    const std::array<unsigned int, 2> n;
+    const double                      dx;
+    double                            V = 0;
+    const Creep                       creep;
+    // Per retardation, its decay over a cell at the present speed and the
+    // transformed influence of its wake beyond the window (empty at rest).
+    std::vector<CellDecay>                         decay;
     std::vector<std::vector<std::complex<double>>> wake;
     // FFTW's plans, buffers and the transformed kernel, kept out of this
     // header.

@@ -32,8 +32,8 @@ namespace viscoslide
     set_speed(double V) override;
     void
     apply(const Vector<double> &q, Vector<double> &u) const override;
-    double
-    dissipation_rate(const Vector<double> &q) const override;
+    void
+    creep_slope(const Vector<double> &q, Vector<double> &slope) const override;
     NewtonPreconditioner &
     preconditioner() override
     {

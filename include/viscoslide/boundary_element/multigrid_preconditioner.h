@@ -25,7 +25,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/periodic_compliance.h>
 #include <viscoslide/boundary_element/surface_grid.h>
 
 #include <array>

@@ -11,8 +11,8 @@
 #ifndef viscoslide_boundary_element_periodic_grid_h
 #define viscoslide_boundary_element_periodic_grid_h
 
-#include <viscoslide/boundary_element/compliance.h>
 #include <viscoslide/boundary_element/multigrid_preconditioner.h>
+#include <viscoslide/boundary_element/periodic_compliance.h>
 #include <viscoslide/boundary_element/uniform_grid.h>
 #include <viscoslide/parameters.h>
 
@@ -38,8 +38,8 @@ namespace viscoslide
     apply(const Vector<double> &q, Vector<double> &u) const override;
     FullMatrix<double>
     block(unsigned int first, unsigned int m) const override;
-    double
-    dissipation_rate(const Vector<double> &q) const override;
+    void
+    creep_slope(const Vector<double> &q, Vector<double> &slope) const override;
     NewtonPreconditioner &
     preconditioner() override
     {

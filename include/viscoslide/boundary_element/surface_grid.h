@@ -139,10 +139,14 @@ namespace viscoslide
     {
       return false;
     }
-    // The rate of work of the traction q on the solid in a steady state:
-    // its dissipation (compliance.h states the convention).
-    virtual double
-    dissipation_rate(const Vector<double> &q) const = 0;
+    // du_c/dx of the compliance at the points (compliance.h).
+    virtual void
+    creep_slope(const Vector<double> &q, Vector<double> &slope) const = 0;
+    // The rate of work of the traction q on the solid in a steady state,
+    // -V sum_j A_j q_j du_c/dx_j: its dissipation (compliance.h states the
+    // convention).
+    double
+    dissipation_rate(const Vector<double> &q) const;
     // The preconditioner of Newton's system on this grid.
     virtual NewtonPreconditioner &
     preconditioner() = 0;

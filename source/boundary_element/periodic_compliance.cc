@@ -1,4 +1,4 @@
-#include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/periodic_compliance.h>
 
 #include <fftw3.h>
 
@@ -20,14 +20,12 @@ namespace viscoslide
       std::array<int, dim - 1> shape;
       for (unsigned int d = 0; d < dim - 1; ++d)
         shape[d] = n[d];
-      // In 3D the transforms are most of the work and FFTW's measured plans
-      // are faster by a third (FFTW keeps what it learned for the next
-      // plan of the size); the line keeps its estimated plans, whose
-      // results the 2D tests store.
-      const unsigned flags = dim == 3 ? FFTW_MEASURE : FFTW_ESTIMATE;
-      forward = fftw_plan_dft_r2c(dim - 1, shape.data(), real, spectrum, flags);
+      // Estimated plans: a measured plan is chosen by timing, so that a
+      // run's digits would depend on the machine's load.
+      forward =
+        fftw_plan_dft_r2c(dim - 1, shape.data(), real, spectrum, FFTW_ESTIMATE);
       backward =
-        fftw_plan_dft_c2r(dim - 1, shape.data(), spectrum, real, flags);
+        fftw_plan_dft_c2r(dim - 1, shape.data(), spectrum, real, FFTW_ESTIMATE);
     }
     ~Plans()
     {
@@ -63,13 +61,6 @@ namespace viscoslide
       return product(n) / n[d - 1] * (n[d - 1] / 2 + 1);
     }
   } // namespace
-
-
-  FullMatrix<double>
-  Compliance::block(const unsigned int, const unsigned int) const
-  {
-    throw std::logic_error("this compliance offers no matrix block");
-  }
 
 
   template <int dim>
@@ -278,25 +269,20 @@ namespace viscoslide
 
 
   template <int dim>
-  double
-  PeriodicCompliance<dim>::dissipation_rate(const Vector<double> &q) const
+  void
+  PeriodicCompliance<dim>::creep_slope(const Vector<double> &q,
+                                       Vector<double>       &slope) const
   {
-    std::copy(q.begin(), q.end(), plans->real);
-    fftw_execute(plans->forward);
-    // V A sum over k_x != 0 of k_x Im C(k) |q_k|^2 (A the period's length
-    // or area), the modes k and -k counted together; the Nyquist modes of
-    // x carry no loss (the inverse transform keeps only their real part).
-    const unsigned int n_x = n[dim - 2], kept = n_x / 2 + 1;
-    double             sum = 0;
+    const unsigned int                n_x = n[dim - 2], kept = n_x / 2 + 1;
+    std::vector<std::complex<double>> factors(n_modes);
     for (unsigned int m = 0; m < n_modes; ++m)
       if (m % kept != 0 && 2 * (m % kept) < n_x)
         {
-          const double q2 = std::norm(
-            std::complex<double>(plans->spectrum[m][0], plans->spectrum[m][1]));
-          sum +=
-            wave_vector(m).first * (symbol[m] * double(n_points)).imag() * q2;
+          const auto [k_x, k] = wave_vector(m);
+          factors[m]          = std::complex<double>(0., k_x) *
+                       (symbol[m] - elastic_compliance(k) / double(n_points));
         }
-    return 2. * V * std::pow(dx, dim - 1) * sum / double(n_points);
+    multiply(factors, q, slope);
   }
 
 

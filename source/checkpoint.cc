@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/checkpoint.h>
 #include <viscoslide/output.h>
 #include <viscoslide/parameters.h>

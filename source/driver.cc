@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/parameter_handler.h>
 
 #include <viscoslide/boundary_element/solver.h>

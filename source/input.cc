@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/utilities.h>
 
 #include <viscoslide/input.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The viscoslide command line; the work is done by run_parameter_file()
 // (driver.h).
 #include <deal.II/base/mpi.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/lac/solver_control.h>
 
 #include <viscoslide/heartbeat.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/mesh.h>
 #include <viscoslide/mpi_gather.h>
 #include <viscoslide/surface_coupling.h>

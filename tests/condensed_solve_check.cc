@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The condensed direct solver (linear_solver.h) on a matrix whose answer
 // is checked by its residual: the advection-diffusion operator of an
 // N x N grid (unsymmetric, like the steady-state Jacobian), factorized

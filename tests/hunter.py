@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Reference solution: Hunter's problem (standard library only).
 
 A rigid parabolic cylinder, profile h(x) = x^2/(2R), slides without friction

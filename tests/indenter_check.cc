@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Prints, for each indenter shape at R_hat = 1e4 (lengths in eps):
 //   slope NAME MISMATCH      largest |slope() - central difference of
 //                            profile()| over |x| <= 1000, relative to the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Prints, for each interaction law at dgamma = eps = 1: the equilibrium gap
 // (p = 0 between wall and attraction), the work of separation from there
 // (Simpson's rule to g = 2000), the peak attraction and the largest

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Maugis-Dugdale adhesion of a rigid cylinder on an elastic half-plane
 (plane strain; Baney and Hui 1997, Johnson and Greenwood 2008), as derived
 in doc/model.md: a contact of half-width a, a cohesive zone a < |x| < c

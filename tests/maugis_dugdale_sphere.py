@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Maugis-Dugdale adhesion of a rigid sphere on an elastic half-space
 (Maugis 1992, in the notation of Johnson and Greenwood 1997): a contact of
 radius a, a cohesive zone a < r < c of constant tension sigma0 that ends

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Newton's method (newton.h) on a scalar equation x = 1 whose residual
 // norm carries a deterministic noise floor, as round-off gives a graded
 // boundary-element grid's norm: |x - 1| + floor (1 + sin(1e9 x))/2. The

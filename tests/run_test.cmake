@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Runs one test (tests/CMakeLists.txt): viscoslide on NAME.prm, unless the
 # test is RUNS_ITSELF (its check makes every run), then CHECK.check (CHECK
 # defaults to NAME) with the arguments WORK_DIR VISCOSLIDE MPIEXEC

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The surface integrals of a 3D block (SurfacePostprocessor<3>) against
 // sums over the same surface that know nothing of the mesh: a parabolic
 // body of revolution, h = r^2/(2R) (R = 100 eps), pressed by delta into a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The harness of the tests' NAME.check scripts: the test's input
 tests/NAME.prm (test_input), running viscoslide on a parameter text and a
 numdiff-friendly summary (Checker). Tables are read

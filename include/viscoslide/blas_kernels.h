@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The BLAS kernels that MUMPS and LAPACK run on.
 #ifndef viscoslide_blas_kernels_h
 #define viscoslide_blas_kernels_h

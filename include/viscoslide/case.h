@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The parts of one case that every solver shares, built once by the driver
 // from the case's parameters and handed to the solver the case names: the
 // reduced units, the solid, the interaction law, the indenter, the output

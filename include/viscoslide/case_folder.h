@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A case's folder in a study: its verdict (status), the parameters it ran
 // with (its identity, for --resume and for refusing to mix two studies),
 // its lock, its provenance files, and the study's steady_state.csv

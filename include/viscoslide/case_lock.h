@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A lock on one run's folder, so that two invocations (or two groups of
 // processes of one invocation) never run the same case at once.
 #ifndef viscoslide_case_lock_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // What a case's parameters are checked against once every section has read
 // its own entries: the entries that must agree across sections, what the
 // mesh and the physics can represent, the block fitted to the wake of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The folder OUTPUT/checkpoint of a run, written as a whole: the solvers
 // fill a temporary folder (the mesh with its vectors through p4est, and
 // their scalars as state.bin), which then replaces the previous

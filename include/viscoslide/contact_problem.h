@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The transient finite element problem: a plane-strain viscoelastic block
 // whose top surface interacts with a rigid indenter through a traction-gap
 // law, loaded by approach, hold, sliding (the indenter profile moves over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The driver: turns a parameter file into one run or into a sweep over the
 // product of the lists of its Sweep section (and of a transient run's
 // speeds), runs each case in its own folder, and keeps the sweep's

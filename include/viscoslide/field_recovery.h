@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Continuous fields from values at quadrature points, for pictures that
 // show a field rather than the mesh: the lumped L2 projection onto Q1 on
 // the solver's own (adapted, distributed) mesh. With psi_j the Q1 basis

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A line at least every 10 s while one solve runs long (a large 3D mesh
 // spends minutes in one Newton step, a GMRES solve in its iterations), so
 // that a user sees it progress.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Rigid indenter profiles h(xi), xi = x - s measured from the apex (lengths
 // in eps). Every solver and the postprocessing see only the Indenter
 // interface. The shapes are plugins (source/indenters/, one file each):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // What every section of the parameter file shares: the exception of bad
 // input, the checks that raise it with the entry's name and value, the
 // choices of Selection entries as enums (parsed once where the file is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Traction-gap laws of the top surface (Derjaguin approximation). The
 // traction p(g) is positive when it attracts (pulls the surface up towards
 // the indenter); the contact pressure of the paper is -p. The laws are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The direct solver of both solvers' Newton systems: one sparse
 // factorization per bulk operator, condensed onto the surface.
 #ifndef viscoslide_linear_solver_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The control of the indenter's normal direction, shared by every solver.
 // Displacement: delta is given. Force: delta is an unknown and the load
 // equation F_n = target closes the system. Spring: force control whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // What the indenter is made to do, for every solver: the approach (to a
 // depth or a load), hold and retraction of the 'Loading' section, and the
 // sliding of the 'Sliding' section (its speeds, the control of the normal

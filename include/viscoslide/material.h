@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Generalised Maxwell solid (Prony series) in plane strain: a spring C0
 // (modulus E0) in parallel with N Maxwell arms, arm k a spring C_k
 // (modulus E_k) in series with a dashpot of relaxation time tau_k, so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The block and its contact-edge refinement, shared by the transient and
 // the steady-state solvers.
 #ifndef viscoslide_mesh_h

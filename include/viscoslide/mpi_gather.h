@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Concatenating small vectors of plain values over the processes.
 #ifndef viscoslide_mpi_gather_h
 #define viscoslide_mpi_gather_h

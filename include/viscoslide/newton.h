@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Newton's method with backtracking on the residual norm, shared by the
 // transient and the steady-state solvers.
 #ifndef viscoslide_newton_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Files of a run: the output directory, CSV tables, VTU/PVTU fields with
 // their .pvd collections, and the provenance of the run.
 #ifndef viscoslide_output_h

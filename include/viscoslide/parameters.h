@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // All run-time parameters of one case, grouped as in step-44: one struct
 // per section of the parameter file, each declared and parsed beside the
 // class it configures (output.h, material.h, interaction_law.h,

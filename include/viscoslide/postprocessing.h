@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Quantities of the top surface: forces, contact length, the surface
 // profile. Everything here is evaluated from the displacement field and
 // the indenter position alone, so the transient and steady-state solvers

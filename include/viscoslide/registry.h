@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A registry of plugins by name, as ASPECT's: each plugin (an indenter
 // shape, an interaction law) registers itself from its own source file
 // with VISCOSLIDE_REGISTER, so that adding one is one new file and no list

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // run.json: what a run was (command line, host, processes, times, the
 // version and the state of the source tree read when it ran, the mesh),
 // beside the run's parameters.prm and log.txt (doc/outputs.md).

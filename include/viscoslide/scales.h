@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The reduced units of a case. Internal units: eps = 1, E0* = E0/(1-nu^2)
 // = 1 and the user's time constant tau_ref = 1. Everything that turns
 // internal numbers into the paper's dimensionless groups lives here, so

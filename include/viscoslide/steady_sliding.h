@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // What every solver of the steady sliding state offers (the finite-element
 // SteadyStateSolver and the BoundaryElementSolver), and the loop over the
 // stations of a run that both share: the listed speeds, then the loads of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // steady_state.csv of a case: one row per steady sliding state that a
 // solver reached (or failed to reach), written by every solver through the
 // same columns, and printed with the energy balance (implemented in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The cases of a study: a parameter file read once, the product of the
 // lists of its Sweep section (and of a transient run's speeds) turned into
 // cases, each with the entries it changes and its folder, each checked

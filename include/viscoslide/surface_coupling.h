@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The coupling of the block's top surface to the rigid indenter: the one
 // place where the surface physics of every solver is written (implemented
 // in source/surface_coupling.cc).

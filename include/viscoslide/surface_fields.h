@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The surface fields of every solver (pressure and gap along the top
 // surface) as VTU/PVTU or HDF5 through DataOutFaces (implemented in
 // source/surface_fields.cc).

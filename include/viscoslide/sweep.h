@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The 'Sweep' section: the lists whose product is a study, each case a run
 // of its own in its own folder (doc/sweeps.md). An empty list leaves the
 // entry of its own section alone.

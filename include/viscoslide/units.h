@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The 'Units' section: a case given in SI units (moduli in Pa, times in s,
 // lengths in m, speeds in m/s, loads in N/m in 2D and N in 3D) and the
 // temperature at which the material is taken. The program works in the

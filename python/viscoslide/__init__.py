@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """viscoslide's Python side: reading, checking, drawing and converting the
 results of build/viscoslide, in one importable package (Python 3.11).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The paper's claims, each written once, judged on a study's table.
 
 scripts/claims prints the claims table of doc/verification.md from the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Compares two steady_state.csv files row by row (matched by V_hat and
 load): prints, per speed, mu (the x force on the indenter over F_n),
 mu_contact_set (the paper's eq. 2 over the contact set), mu_energy and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Mesh-refinement studies of the steady-state finite elements against the
 independent reference curves (../shared/reference/, beside the checkout):
 the error of mu and L_hat at three mesh levels, the differences between

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """From a DMA measurement to the Prony series viscoslide reads: the master
 curve by time-temperature superposition, its shift law, and the fit.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Runs the study behind each named figure of the paper and draws it.
 
   scripts/figures [-np N] FIG [FIG ...]     e.g. scripts/figures fig04b fig10

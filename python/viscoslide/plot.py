@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Draws the steady sliding curves of one or more runs as figures for a
 paper: PNG (200 dpi) and PDF, matplotlib.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Draws one scalar field of a viscoslide .pvtu (all its pieces) as a
 colour map near the contact, PNG (200 dpi) and PDF (the dissipation maps
 of Fig. 5).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The step-by-step history of a transient run with a sliding program
 (Sliding/Program): start-ups, stops, restarts and reciprocating strokes,
 PNG (200 dpi) and PDF.

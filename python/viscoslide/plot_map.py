@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """scripts/plot_map: the contact footprint of a sphere seen from above,
 from the .vti maps the 3D boundary elements write beside each profile
 (doc/sphere.md): the pressure p_hat = p/sigma_max in colour (compression

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Friction of a temperature sweep in SI units: the classic picture of
 rubber and polymer friction, PNG (200 dpi) and PDF.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The one way to change entries of a deal.II ParameterHandler file.
 
 Tests and benchmarks run viscoslide on a parameter file with a few entries

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The look of every viscoslide figure, in one place: matplotlib's settings
 (serif STIX text, TrueType fonts in the PDF as journals ask, 200 dpi), the
 symbols and names of the table's columns and solvers, the number format

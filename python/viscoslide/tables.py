@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The one reader of viscoslide's CSV tables.
 
 Every table the program writes (steady_state.csv, approach.csv,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """doc/test_results.md, generated: what each test asserts, against what
 reference, with what tolerance and what it measured, from the tests
 themselves, so that the numbers cannot go stale.

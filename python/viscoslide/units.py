@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Physical units for viscoslide, whose inputs and outputs are dimensionless
 (doc/conventions.md).
 

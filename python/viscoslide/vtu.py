@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """A reader of the VTU/PVTU fields viscoslide writes, standard library only.
 
 deal.II writes binary DataArrays, base64-encoded and zlib-compressed in

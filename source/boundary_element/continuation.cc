@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // BoundaryElementSolver: steps in approach, speed and load, each from the
 // equilibrium before with its secant predictor.
 #include <viscoslide/boundary_element/solver.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Newton's method with the grid's motions among the unknowns
 // (doc/boundary_element.md, Graded grid, The edges as unknowns).
 #include <deal.II/lac/full_matrix.h>

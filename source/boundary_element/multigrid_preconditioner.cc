@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/boundary_element/multigrid_preconditioner.h>
 
 #include <algorithm>

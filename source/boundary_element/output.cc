@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // BoundaryElementSolver: the profile of the surface and, in 3D, its map.
 #include <deal.II/base/mpi.h>
 

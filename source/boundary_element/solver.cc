@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // BoundaryElementSolver: the grid a case asks for, the run, the residual,
 // GMRES on the grid's preconditioner and Newton's method.
 #include <deal.II/base/utilities.h>

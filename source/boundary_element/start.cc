@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // BoundaryElementSolver: the start of a case. The approach, a sequence of
 // relaxed (V = 0) states in delta to the Target load or the Final
 // approach; or, on a grid that follows the contact, the JKR contact of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ContactProblem: the discrete system, its assembly and linear solves, and
 // Newton's method on it.
 #include <deal.II/dofs/dof_tools.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ContactProblem: construction and the loading program (approach, hold,
 // sliding, retraction), stepped by advance_to().
 #include <deal.II/base/utilities.h>

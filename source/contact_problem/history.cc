@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ContactProblem: the quadrature-point history of the arm stresses and the
 // dissipated energy (step-18's idea, kept in a discontinuous field so that
 // refinement and checkpoints carry it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ContactProblem: the tables (approach.csv, history.csv), the per-step
 // report, surface profiles and the volume and surface fields.
 #include <deal.II/fe/fe_values.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ContactProblem: hanging-node refinement at the moving contact edges,
 // carrying solution, predictor and history to the new mesh.
 #include <deal.II/distributed/solution_transfer.h>

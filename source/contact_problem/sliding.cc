@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ContactProblem: the sliding phase, by time stepping until steady state
 // (slide()), or the state handed to the steady-state solver (hand_over()).
 #include <viscoslide/contact_problem.h>

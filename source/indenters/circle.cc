@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The exact circle R - sqrt(R^2 - xi^2). Beyond |xi| = R the cylinder no
 // longer faces the surface; there h = R, flat, a gap of R_hat >= 10
 // interaction ranges at which every law's traction has vanished.

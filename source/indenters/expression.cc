@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // h(x) typed as a muParser expression in x (eps) with the constant R
 // (= R_hat); the slope by central differences (FunctionParser is an
 // AutoDerivativeFunction).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A flat punch of half-width b whose corners are rounded by parabolas of
 // radius r: h = 0 for |xi| <= b, (|xi| - b)^2/(2r) beyond, so that the
 // pressure stays bounded and the contact edges move smoothly (Ciavarella,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The Hertzian cylinder h = xi^2/(2R), the paper's indenter.
 #include <viscoslide/indenter.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // h = |xi|^n/(n R^(n-1)); n = 2 is the parabola of radius R.
 #include <viscoslide/indenter.h>
 

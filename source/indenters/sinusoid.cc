@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A periodic wavy indenter h = A (1 - cos(2 pi xi/lambda)), its apex
 // curvature radius lambda^2/(4 pi^2 A).
 #include <viscoslide/indenter.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // h(x) from a CSV table (columns x_over_eps, h_over_eps, x increasing),
 // linearly interpolated; beyond its ends the end values continue flat.
 #include <deal.II/base/function_lib.h>

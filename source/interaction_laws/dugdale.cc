@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Maugis-Dugdale: a constant attraction sigma0 (the Lennard-Jones peak
 // traction) from the contact up to the range h = dgamma/sigma0, on top of
 // the rounded repulsive branch of the Lennard-Jones law below eps. Newton

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Xu-Needleman's normal law about the equilibrium gap eps: with d = g -
 // eps, p = dgamma d/delta^2 exp(-d/delta), whose work of separation from
 // d = 0 is exactly dgamma. delta = 9 sqrt(3)/(16 e) eps gives the peak

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/interaction_laws/lennard_jones.h>
 
 #include <algorithm>

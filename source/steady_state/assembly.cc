@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SteadyStateSolver: the equations of the steady sliding state, their
 // residual and Jacobian, assembled on MeshWorker::mesh_loop (step-12).
 #include <deal.II/fe/fe_interface_values.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SteadyStateSolver: checkpoint and restart of the continuation
 // (doc/restart.md).
 #include <deal.II/distributed/solution_transfer.h>

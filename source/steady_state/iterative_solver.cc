@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SteadyIterativeSolver: GMRES with the block triangular preconditioner of
 // the header, the strain block by a sweep, the displacement block by ML.
 #include <deal.II/base/conditional_ostream.h>

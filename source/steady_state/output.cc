@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SteadyStateSolver: the stations of a run with their rows, profiles and
 // fields, and the dissipation.
 #include <deal.II/fe/fe_values.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/checkpoint.h>
 #include <viscoslide/contact_problem.h>
 #include <viscoslide/mesh.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SteadyStateSolver: setup, the start from the relaxed state, Newton's
 // method and the continuation in speed and load.
 #include <deal.II/base/utilities.h>

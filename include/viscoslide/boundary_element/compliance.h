@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // What the boundary-element solver's grids need of a surface compliance:
 // the vertical displacement of the top surface under a vertical traction
 // that slides at speed V towards +x. One class per model of the solid:

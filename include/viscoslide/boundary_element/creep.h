@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The creep of the solid as the isolated contacts of the boundary elements
 // use it (isolated_compliance.h in 3D, graded_compliance.h in plane
 // strain): the creep function of the Prony series as a sum of

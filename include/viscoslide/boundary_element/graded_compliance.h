@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The viscoelastic surface compliance of an isolated contact on the
 // plane-strain half-plane, on a graded grid (boundary_element/grid.h):
 // cells [s_j, s_j+1] of any widths w_j, the traction q_j constant on each,

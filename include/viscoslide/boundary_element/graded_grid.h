@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The graded grid of the boundary elements (Boundary element/Grid =
 // graded; plane strain on the half-plane): an isolated contact whose cells
 // are Grid spacing wide at the two contact edges and grow by the Grading

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The 'Boundary element' section: the surface grid of the boundary-element
 // solver (boundary_element/solver.h), uniform and periodic or, in plane
 // strain on the half-plane, graded about the contact edges; and the

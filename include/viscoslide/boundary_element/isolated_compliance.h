@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The viscoelastic surface compliance of an isolated contact on a
 // half-space, for the boundary elements in 3D: the window of n_y x n_x
 // points of spacing dx about the contact is all of the surface that

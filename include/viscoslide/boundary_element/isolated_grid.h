@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The isolated window of the boundary elements on the 3D half-space:
 // uniform points over Domain width x Domain length about the indenter,
 // all of the surface that carries traction, the solid around it infinite

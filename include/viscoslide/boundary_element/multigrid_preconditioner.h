@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The preconditioner of the boundary-element solver's GMRES on a plane of
 // points (3D), where a dense Jacobian of the contact window (the 2D
 // solver's WindowPreconditioner) would not fit: geometric multigrid on

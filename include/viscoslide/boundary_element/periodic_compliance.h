@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The viscoelastic surface compliance of the boundary-element solver: the
 // vertical displacement of the top surface under a vertical traction that
 // slides at speed V towards +x, for a periodic half-space or a periodic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The periodic grid of the boundary elements: uniform points over one
 // period of a periodic surface, one indenter per period
 // (doc/boundary_element.md, Equations): the plane-strain half-plane and

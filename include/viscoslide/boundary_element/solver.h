@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The boundary-element solver of the steady sliding state
 // (Sliding/Solver = boundary-element; doc/boundary_element.md).
 //

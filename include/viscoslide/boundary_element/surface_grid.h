@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The surface grid of the boundary-element solver: what the nonlinear
 // solver (solver.h) sees of a discretisation of the top surface. One class
 // per grid: the periodic grid of uniform points (periodic_grid.h: the 2D

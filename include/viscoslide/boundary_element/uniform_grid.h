@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The uniform grids of the boundary elements: n_x points along x (and n_y
 // across the track in 3D) of spacing dx, centred on the indenter's apex,
 // x fastest: point j at x = (j mod n_x - n_x/2) dx and, in 3D, y = (j div

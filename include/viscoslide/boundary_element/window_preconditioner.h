@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The preconditioner of Newton's system on a line of points (the 2D
 // grids): the Jacobian on the window of points near the contact, with the
 // load equation bordered, factorized in single or double precision

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The Lennard-Jones law, p(g) = 8 dgamma/(3 eps) [(eps/g)^3 - (eps/g)^9],
 // and its repulsive branch alone. Declared here because the Dugdale law
 // uses its repulsive branch as the wall.

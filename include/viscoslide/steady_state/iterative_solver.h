@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The steady state's Newton systems solved by a Krylov method, for meshes
 // beyond the sparse direct solver (a 3D block): GMRES on the whole system
 //   J = [A B]   displacement rows

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A case of the steady-state solver: the finite-element approach of the
 // transient solver (ContactProblem::approach()), whose block, surface
 // coupling and relaxed state the steady-state solver then takes over, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The steady sliding state solved directly, in the frame of the indenter.
 //
 // There the material flows with velocity -V e_x under the indenter, which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The viscous strain of the steady-state solver: where its components sit
 // in the FESystem, and the cell-wise projection of eps(u) onto its space
 // (implemented in source/steady_state/viscous_strain.cc).

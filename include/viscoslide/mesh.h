@@ -172,6 +172,22 @@ namespace viscoslide
   resolve_on_adapted_meshes(unsigned int                 max_cycles,
                             const std::function<bool()> &adapt_mesh,
                             const std::function<int()>  &solve);
+  // The point of an axis-parallel face at the unit face point t.
+  template <class FaceIterator,
+            int dim = FaceIterator::AccessorType::space_dimension>
+  Point<dim>
+  surface_point(const FaceIterator &face, const Point<dim - 1> &t)
+  {
+    Point<dim> p = face->vertex(0);
+    if constexpr (dim == 2)
+      p[0] =
+        face->vertex(0)[0] + t[0] * (face->vertex(1)[0] - face->vertex(0)[0]);
+    else
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] += t[0] * (face->vertex(1)[d] - face->vertex(0)[d]) +
+                t[1] * (face->vertex(2)[d] - face->vertex(0)[d]);
+    return p;
+  }
 } // namespace viscoslide
 
 #endif

@@ -121,148 +121,177 @@ namespace viscoslide
     }
 
 
+    namespace
+    {
+      // The speeds, the control of the load and the solver.
+      void
+      declare_motion(ParameterHandler &prm)
+      {
+        prm.declare_entry(
+          "Sliding speed",
+          "0",
+          Patterns::List(Patterns::Double(), 1),
+          "V_hat = V tau/eps of the sliding phase that follows the approach "
+          "(and hold); the indenter profile moves towards +x over the fixed "
+          "surface. 0: no sliding. A comma-separated list of positive "
+          "speeds is a sweep: the steady-state solver visits them in the "
+          "order given by one continuation (each speed starts from the "
+          "solution of the one before), the transient solver runs each as a "
+          "case of its own; either way one row per speed in "
+          "steady_state.csv.");
+        prm.declare_entry(
+          "Control",
+          "displacement",
+          Patterns::Selection(choice_pattern<Control>()),
+          "'displacement': delta stays at its value after the approach and Fn "
+          "is an output. 'force': Fn stays at the value reached at the end of "
+          "the approach and delta is an unknown solved with the displacements. "
+          "'spring': the indenter hangs on a vertical spring of stiffness "
+          "Spring stiffness whose far end stays where it was at the end of "
+          "the approach, so Fn = F0 + k (delta0 - delta) with F0, delta0 "
+          "those of the approach; between force control (k -> 0) and "
+          "displacement control (k -> infinity), like a real tribometer.");
+        prm.declare_entry(
+          "Spring stiffness",
+          "1",
+          Patterns::Double(),
+          "Control = spring: k_hat = dF_hat/d delta_hat, the spring's force "
+          "(per unit length, in (pi dgamma^2 E0* R)^(1/3)) per eps of "
+          "approach. For scale: the contact's own stiffness dF_hat/d "
+          "delta_hat is about 0.35 at muT = 1, R_hat = 1e4, F_hat = 1.");
+        prm.declare_entry(
+          "Solver",
+          "transient",
+          Patterns::Selection(choice_pattern<SlidingSolver>()),
+          "'transient': the moving-profile time stepping of the paper until "
+          "steady state. 'steady-state': the steady sliding state solved "
+          "directly in the frame of the indenter (doc/steady_state.md), with "
+          "continuation in V_hat from the relaxed state of the approach; "
+          "no history.csv, no retraction afterwards. 'boundary-element': the "
+          "same steady states of a periodic half-plane or bonded layer from "
+          "the surface compliance alone, applied by FFT on a uniform grid "
+          "(doc/boundary_element.md, section Boundary element): no mesh, "
+          "no fields, an independent check of the finite elements.");
+      }
+
+
+      // The transient solver's sliding: its steps, its steady state, its
+      // programs.
+      void
+      declare_transient(ParameterHandler &prm)
+      {
+        prm.declare_entry(
+          "Sliding increment",
+          "1",
+          Patterns::Double(),
+          "Sliding distance per time step, in finest surface "
+          "cells (Mesh/Finest surface cell); dt = increment/V.");
+        prm.declare_entry(
+          "Maximum sliding distance",
+          "0",
+          Patterns::Double(),
+          "Stop sliding after this distance (in eps) even "
+          "without steady state (then steady = 0). 0: "
+          "automatic, 4 L + 30 min(V tau_c, 4 L) with L the "
+          "contact length after the approach and tau_c the "
+          "retardation time; refused if the indenter would come closer "
+          "than 2 L to the lateral boundary.");
+        prm.declare_entry(
+          "Steady-state tolerance",
+          "1e-3",
+          Patterns::Double(),
+          "Steady state: the means of Fn (or delta under force control), Ft "
+          "and L_hat over the two halves of the last Steady-state window of "
+          "sliding differ by less than this, relative to their magnitude (Ft: "
+          "to max(|Ft|, 1e-3 |Fn|)). The steady values in steady_state.csv "
+          "are the means over that window: with adhesion the contact edges "
+          "jump from node to node and Ft flickers about its mean.");
+        prm.declare_entry(
+          "Energy balance tolerance",
+          "5e-3",
+          Patterns::Double(),
+          "The transient declares a steady state only when, besides the "
+          "window test of Steady-state tolerance, the work of the x force on "
+          "the indenter balances the dissipation over the window to this "
+          "fraction: |F_t V / D - 1| <= tolerance (not judged where "
+          "mu_energy < 1e-3, the elastic limits). A coarse mesh leaves the "
+          "balance off by about 1 % even once the window has settled.");
+        prm.declare_entry("Steady-state window",
+                          "0",
+                          Patterns::Double(),
+                          "Sliding distance (eps) over which steady state is "
+                          "judged and its values averaged. 0: automatic, "
+                          "max(L, 2 min(V tau_c, 4 L)); the cap at 4 L can "
+                          "accept a state a few % from steady when V tau_c "
+                          "is much longer than L (doc/steady_state.md): set "
+                          "V tau_c or more for 1 %.");
+        prm.declare_entry(
+          "Program",
+          "",
+          Patterns::Anything(),
+          "Transient solver: a sliding program instead of sliding to the "
+          "steady state, as segments separated by ';', each 'slide V for D' "
+          "(V_hat, negative to slide back towards -x, over D eps) or 'rest "
+          "for T' (the indenter held for T tau, under the control of "
+          "Sliding/Control): e.g. 'slide 1 for 400; rest for 100; slide 1 "
+          "for 400' (a start, a stop and a restart after a dwell) or 'slide "
+          "1 for 200; slide -1 for 200' with Program repeats = 5 (five "
+          "reciprocating strokes). history.csv gets a row per step; no row "
+          "in steady_state.csv. Empty: slide at the Sliding speed to the "
+          "steady state.");
+        prm.declare_entry("Program repeats",
+                          "1",
+                          Patterns::Integer(),
+                          "How many times the Program runs in a row.");
+      }
+
+
+      // The steady-state solvers' continuation in speed and load.
+      void
+      declare_steady_state(ParameterHandler &prm)
+      {
+        prm.declare_entry("Continuation factor",
+                          "4",
+                          Patterns::Double(),
+                          "Steady-state solver: largest ratio between two "
+                          "successive speeds of the continuation from the "
+                          "relaxed state to Sliding speed (halved in log "
+                          "scale when Newton fails). It starts at the speed "
+                          "whose relaxation length V tau, of the slowest arm, "
+                          "is a tenth of the finest surface cell.");
+        prm.declare_entry("Viscous strain degree",
+                          "1",
+                          Patterns::Integer(),
+                          "Steady-state solver: polynomial degree of the "
+                          "discontinuous viscous strain field (FE_DGQ). The "
+                          "arm sees the L2 projection of eps(u) onto this "
+                          "space (doc/steady_state.md); 1 agrees with 2 to "
+                          "0.03 % in mu in the Hunter test at a fifth of the "
+                          "cost.");
+        prm.declare_entry(
+          "Load path",
+          "",
+          Patterns::List(Patterns::Anything(), 0),
+          "Steady-state solver: after the last listed speed, follow the "
+          "steady state at that speed through these loads, in the order "
+          "given, by continuation (each from the solution of the one before, "
+          "in steps halved where Newton fails): F_hat values under force "
+          "control (spring control: the spring's force at the approach's "
+          "delta), delta_hat values under displacement control. One row per "
+          "load in steady_state.csv, after the speeds' rows. Follows a "
+          "branch, e.g. a sliding contact unloaded towards pull-off. Empty: "
+          "none.");
+      }
+    } // namespace
+
+
     void
     Sliding::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Sliding");
-      prm.declare_entry(
-        "Sliding speed",
-        "0",
-        Patterns::List(Patterns::Double(), 1),
-        "V_hat = V tau/eps of the sliding phase that follows the approach "
-        "(and hold); the indenter profile moves towards +x over the fixed "
-        "surface. 0: no sliding. A comma-separated list of positive "
-        "speeds is a sweep: the steady-state solver visits them in the "
-        "order given by one continuation (each speed starts from the "
-        "solution of the one before), the transient solver runs each as a "
-        "case of its own; either way one row per speed in "
-        "steady_state.csv.");
-      prm.declare_entry(
-        "Control",
-        "displacement",
-        Patterns::Selection(choice_pattern<Control>()),
-        "'displacement': delta stays at its value after the approach and Fn "
-        "is an output. 'force': Fn stays at the value reached at the end of "
-        "the approach and delta is an unknown solved with the displacements. "
-        "'spring': the indenter hangs on a vertical spring of stiffness "
-        "Spring stiffness whose far end stays where it was at the end of "
-        "the approach, so Fn = F0 + k (delta0 - delta) with F0, delta0 "
-        "those of the approach; between force control (k -> 0) and "
-        "displacement control (k -> infinity), like a real tribometer.");
-      prm.declare_entry(
-        "Spring stiffness",
-        "1",
-        Patterns::Double(),
-        "Control = spring: k_hat = dF_hat/d delta_hat, the spring's force "
-        "(per unit length, in (pi dgamma^2 E0* R)^(1/3)) per eps of "
-        "approach. For scale: the contact's own stiffness dF_hat/d "
-        "delta_hat is about 0.35 at muT = 1, R_hat = 1e4, F_hat = 1.");
-      prm.declare_entry("Sliding increment",
-                        "1",
-                        Patterns::Double(),
-                        "Sliding distance per time step, in finest surface "
-                        "cells (Mesh/Finest surface cell); dt = increment/V.");
-      prm.declare_entry(
-        "Maximum sliding distance",
-        "0",
-        Patterns::Double(),
-        "Stop sliding after this distance (in eps) even "
-        "without steady state (then steady = 0). 0: "
-        "automatic, 4 L + 30 min(V tau_c, 4 L) with L the "
-        "contact length after the approach and tau_c the "
-        "retardation time; refused if the indenter would come closer "
-        "than 2 L to the lateral boundary.");
-      prm.declare_entry(
-        "Steady-state tolerance",
-        "1e-3",
-        Patterns::Double(),
-        "Steady state: the means of Fn (or delta under force control), Ft "
-        "and L_hat over the two halves of the last Steady-state window of "
-        "sliding differ by less than this, relative to their magnitude (Ft: "
-        "to max(|Ft|, 1e-3 |Fn|)). The steady values in steady_state.csv "
-        "are the means over that window: with adhesion the contact edges "
-        "jump from node to node and Ft flickers about its mean.");
-      prm.declare_entry(
-        "Energy balance tolerance",
-        "5e-3",
-        Patterns::Double(),
-        "The transient declares a steady state only when, besides the "
-        "window test of Steady-state tolerance, the work of the x force on "
-        "the indenter balances the dissipation over the window to this "
-        "fraction: |F_t V / D - 1| <= tolerance (not judged where "
-        "mu_energy < 1e-3, the elastic limits). A coarse mesh leaves the "
-        "balance off by about 1 % even once the window has settled.");
-      prm.declare_entry("Steady-state window",
-                        "0",
-                        Patterns::Double(),
-                        "Sliding distance (eps) over which steady state is "
-                        "judged and its values averaged. 0: automatic, "
-                        "max(L, 2 min(V tau_c, 4 L)); the cap at 4 L can "
-                        "accept a state a few % from steady when V tau_c "
-                        "is much longer than L (doc/steady_state.md): set "
-                        "V tau_c or more for 1 %.");
-      prm.declare_entry(
-        "Solver",
-        "transient",
-        Patterns::Selection(choice_pattern<SlidingSolver>()),
-        "'transient': the moving-profile time stepping of the paper until "
-        "steady state. 'steady-state': the steady sliding state solved "
-        "directly in the frame of the indenter (doc/steady_state.md), with "
-        "continuation in V_hat from the relaxed state of the approach; "
-        "no history.csv, no retraction afterwards. 'boundary-element': the "
-        "same steady states of a periodic half-plane or bonded layer from "
-        "the surface compliance alone, applied by FFT on a uniform grid "
-        "(doc/boundary_element.md, section Boundary element): no mesh, "
-        "no fields, an independent check of the finite elements.");
-      prm.declare_entry("Continuation factor",
-                        "4",
-                        Patterns::Double(),
-                        "Steady-state solver: largest ratio between two "
-                        "successive speeds of the continuation from the "
-                        "relaxed state to Sliding speed (halved in log "
-                        "scale when Newton fails). It starts at the speed "
-                        "whose relaxation length V tau, of the slowest arm, "
-                        "is a tenth of the finest surface cell.");
-      prm.declare_entry("Viscous strain degree",
-                        "1",
-                        Patterns::Integer(),
-                        "Steady-state solver: polynomial degree of the "
-                        "discontinuous viscous strain field (FE_DGQ). The "
-                        "arm sees the L2 projection of eps(u) onto this "
-                        "space (doc/steady_state.md); 1 agrees with 2 to "
-                        "0.03 % in mu in the Hunter test at a fifth of the "
-                        "cost.");
-      prm.declare_entry(
-        "Load path",
-        "",
-        Patterns::List(Patterns::Anything(), 0),
-        "Steady-state solver: after the last listed speed, follow the "
-        "steady state at that speed through these loads, in the order "
-        "given, by continuation (each from the solution of the one before, "
-        "in steps halved where Newton fails): F_hat values under force "
-        "control (spring control: the spring's force at the approach's "
-        "delta), delta_hat values under displacement control. One row per "
-        "load in steady_state.csv, after the speeds' rows. Follows a "
-        "branch, e.g. a sliding contact unloaded towards pull-off. Empty: "
-        "none.");
-      prm.declare_entry(
-        "Program",
-        "",
-        Patterns::Anything(),
-        "Transient solver: a sliding program instead of sliding to the "
-        "steady state, as segments separated by ';', each 'slide V for D' "
-        "(V_hat, negative to slide back towards -x, over D eps) or 'rest "
-        "for T' (the indenter held for T tau, under the control of "
-        "Sliding/Control): e.g. 'slide 1 for 400; rest for 100; slide 1 "
-        "for 400' (a start, a stop and a restart after a dwell) or 'slide "
-        "1 for 200; slide -1 for 200' with Program repeats = 5 (five "
-        "reciprocating strokes). history.csv gets a row per step; no row "
-        "in steady_state.csv. Empty: slide at the Sliding speed to the "
-        "steady state.");
-      prm.declare_entry("Program repeats",
-                        "1",
-                        Patterns::Integer(),
-                        "How many times the Program runs in a row.");
+      declare_motion(prm);
+      declare_transient(prm);
+      declare_steady_state(prm);
       prm.leave_subsection();
     }
 

@@ -286,22 +286,11 @@ namespace viscoslide
       }
 
 
-      // The SI material and contact of `u` in reduced units, and the SI
-      // values of the reduced units in `u`; notes what it derived.
+      // The reduced entries that SI units derive must be left at their
+      // defaults.
       void
-      convert_from_si(AllParameters &p, const bool spectrum)
+      require_reduced_defaults(const AllParameters &p)
       {
-        Units       &u = p.units;
-        const double R = u.radius, eps = u.range, dgamma = u.work_of_adhesion;
-        const std::vector<double> si_speeds = p.sliding.speeds;
-        for (double &V : p.sliding.speeds)
-          V *= u.time_constant / eps;
-        p.sliding.speed = p.sliding.speeds.back();
-        for (auto &segment : p.sliding.program)
-          if (segment.rest())
-            segment.length /= u.time_constant; // s to tau
-          else
-            segment.speed *= u.time_constant / eps;
         using Parameters::Adhesion;
         using Parameters::Material;
         require_default(p.material.E0_over_Einf ==
@@ -317,6 +306,15 @@ namespace viscoslide
                           std::stod(Adhesion::default_R_over_eps),
                         "Adhesion/R over eps",
                         "Radius and Interaction range");
+      }
+
+
+      // The relaxed and instantaneous moduli (Pa) of the SI material:
+      // E0/Einf set, E0 returned.
+      double
+      convert_moduli(AllParameters &p, const bool spectrum)
+      {
+        const Units &u = p.units;
         // A Prony series' weights are the arms' moduli in Pa.
         auto  &series = p.material.prony_series;
         double E0     = u.relaxed_modulus;
@@ -342,6 +340,28 @@ namespace viscoslide
                 entry("Units", "Instantaneous modulus", Einf) +
                   " Pa lies below the Relaxed modulus " + num(E0) + " Pa");
         p.material.E0_over_Einf = E0 / Einf;
+        return E0;
+      }
+
+
+      // The SI material and contact of `u` in reduced units, and the SI
+      // values of the reduced units in `u`; notes what it derived.
+      void
+      convert_from_si(AllParameters &p, const bool spectrum)
+      {
+        Units       &u = p.units;
+        const double R = u.radius, eps = u.range, dgamma = u.work_of_adhesion;
+        const std::vector<double> si_speeds = p.sliding.speeds;
+        for (double &V : p.sliding.speeds)
+          V *= u.time_constant / eps;
+        p.sliding.speed = p.sliding.speeds.back();
+        for (auto &segment : p.sliding.program)
+          if (segment.rest())
+            segment.length /= u.time_constant; // s to tau
+          else
+            segment.speed *= u.time_constant / eps;
+        require_reduced_defaults(p);
+        const double E0 = convert_moduli(p, spectrum);
 
         const double nu            = p.material.poisson_ratio;
         const double E0_star       = E0 / (1. - nu * nu);

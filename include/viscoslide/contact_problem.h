@@ -306,6 +306,12 @@ namespace viscoslide
     void
     record_step(Phase phase);
     void
+    add_history_row();
+    void
+    add_approach_row(Phase phase);
+    void
+    print_step(Phase phase);
+    void
     write_fields();
     // At the quadrature points of `cell` (fe_values reinit there, with
     // gradients): the stress components xx, yy, xy, zz, the dissipation

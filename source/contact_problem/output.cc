@@ -97,61 +97,95 @@ namespace viscoslide
   ContactProblem::record_step(const Phase phase)
   {
     TimerOutput::Scope t(timer, "postprocessing");
-    const auto         sq = postprocessor.integrate(dof_handler,
-                                            solution,
-                                            committed.delta,
-                                            committed.s);
-    last_quantities       = sq;
+    last_quantities       = postprocessor.integrate(dof_handler,
+                                              solution,
+                                              committed.delta,
+                                              committed.s);
     last_dissipation_rate = total_dissipation_rate();
-    using F               = CsvTable;
-    const auto integer    = [](const auto n) { return std::to_string(n); };
     if (phase == Phase::slide)
       {
         ++history_rows;
-        const double V =
-          std::abs(sliding_speed()) * scales.eps / scales.tau_ref;
-        const double rate =
-          last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
-        history_table->add_row(
-          {{"time_over_tau", F::format(committed.time / scales.tau_ref)},
-           {"V_hat", F::format(sliding_speed())},
-           {"s_over_eps", F::format(committed.s / scales.eps)},
-           {"delta_hat", F::format(committed.delta / scales.eps)},
-           {"F_n_hat", F::format(sq.normal_force / scales.force)},
-           {"F_t_hat", F::format(sq.tangential_force / scales.force)},
-           {"F_t_contact_set_hat",
-            F::format(sq.contact_set_tangential_force / scales.force)},
-           {"mu", F::format(std::abs(sq.tangential_force / sq.normal_force))},
-           {"mu_contact_set",
-            F::format(
-              std::abs(sq.contact_set_tangential_force / sq.normal_force))},
-           {"L_hat", F::format(sq.contact_length / scales.R)},
-           {"x_trail_over_R", F::format(sq.x_trail / scales.R)},
-           {"x_lead_over_R", F::format(sq.x_lead / scales.R)},
-           {"dissipation_rate_hat", F::format(rate)},
-           {"mu_energy",
-            F::format(std::abs(last_dissipation_rate / V / sq.normal_force))},
-           {"newton_iterations", integer(last_newton_iterations)},
-           {"n_dofs", integer(dof_handler.n_dofs())}});
+        add_history_row();
       }
     else
       {
         ++approach_rows;
-        approach_table->add_row(
-          {{"step", integer(step_number)},
-           {"phase", name(phase)},
-           {"time_over_tau", F::format(committed.time / scales.tau_ref)},
-           {"delta_hat", F::format(committed.delta / scales.eps)},
-           {"F_n_hat", F::format(sq.normal_force / scales.force)},
-           {"F_t_hat", F::format(sq.tangential_force / scales.force)},
-           {"L_hat", F::format(sq.contact_length / scales.R)},
-           {"min_gap_over_eps", F::format(sq.minimum_gap / scales.eps)},
-           {"newton_iterations", integer(last_newton_iterations)},
-           {"step_cuts", integer(last_step_cuts)},
-           {"jump", integer(last_step_relaxed ? 1 : 0)},
-           {"n_dofs", integer(dof_handler.n_dofs())},
-           {"n_cells", integer(triangulation.n_global_active_cells())}});
+        add_approach_row(phase);
       }
+    print_step(phase);
+    if (prm.output.profile_every > 0 &&
+        step_number % prm.output.profile_every == 0)
+      write_profile("surface_profile-" +
+                    Utilities::int_to_string(step_number, 5) + ".csv");
+    if (prm.output.write_fields && prm.output.fields_every > 0 &&
+        step_number % prm.output.fields_every == 0)
+      write_fields();
+    ++step_number;
+  }
+
+
+  // A row of history.csv: the sliding step just committed.
+  void
+  ContactProblem::add_history_row()
+  {
+    const SurfaceQuantities &sq = last_quantities;
+    using F                     = CsvTable;
+    const auto   integer = [](const auto n) { return std::to_string(n); };
+    const double V = std::abs(sliding_speed()) * scales.eps / scales.tau_ref;
+    const double rate =
+      last_dissipation_rate * scales.tau_ref / (scales.force * scales.eps);
+    history_table->add_row(
+      {{"time_over_tau", F::format(committed.time / scales.tau_ref)},
+       {"V_hat", F::format(sliding_speed())},
+       {"s_over_eps", F::format(committed.s / scales.eps)},
+       {"delta_hat", F::format(committed.delta / scales.eps)},
+       {"F_n_hat", F::format(sq.normal_force / scales.force)},
+       {"F_t_hat", F::format(sq.tangential_force / scales.force)},
+       {"F_t_contact_set_hat",
+        F::format(sq.contact_set_tangential_force / scales.force)},
+       {"mu", F::format(std::abs(sq.tangential_force / sq.normal_force))},
+       {"mu_contact_set",
+        F::format(std::abs(sq.contact_set_tangential_force / sq.normal_force))},
+       {"L_hat", F::format(sq.contact_length / scales.R)},
+       {"x_trail_over_R", F::format(sq.x_trail / scales.R)},
+       {"x_lead_over_R", F::format(sq.x_lead / scales.R)},
+       {"dissipation_rate_hat", F::format(rate)},
+       {"mu_energy",
+        F::format(std::abs(last_dissipation_rate / V / sq.normal_force))},
+       {"newton_iterations", integer(last_newton_iterations)},
+       {"n_dofs", integer(dof_handler.n_dofs())}});
+  }
+
+
+  // A row of approach.csv: the approach or hold step just committed.
+  void
+  ContactProblem::add_approach_row(const Phase phase)
+  {
+    const SurfaceQuantities &sq = last_quantities;
+    using F                     = CsvTable;
+    const auto integer = [](const auto n) { return std::to_string(n); };
+    approach_table->add_row(
+      {{"step", integer(step_number)},
+       {"phase", name(phase)},
+       {"time_over_tau", F::format(committed.time / scales.tau_ref)},
+       {"delta_hat", F::format(committed.delta / scales.eps)},
+       {"F_n_hat", F::format(sq.normal_force / scales.force)},
+       {"F_t_hat", F::format(sq.tangential_force / scales.force)},
+       {"L_hat", F::format(sq.contact_length / scales.R)},
+       {"min_gap_over_eps", F::format(sq.minimum_gap / scales.eps)},
+       {"newton_iterations", integer(last_newton_iterations)},
+       {"step_cuts", integer(last_step_cuts)},
+       {"jump", integer(last_step_relaxed ? 1 : 0)},
+       {"n_dofs", integer(dof_handler.n_dofs())},
+       {"n_cells", integer(triangulation.n_global_active_cells())}});
+  }
+
+
+  // The step's line on the screen, with how far its phase is.
+  void
+  ContactProblem::print_step(const Phase phase)
+  {
+    const SurfaceQuantities &sq = last_quantities;
     pcout << "  step " << std::setw(4) << step_number << "  " << std::setw(8)
           << name(phase) << "  delta_hat " << std::setw(9) << committed.delta
           << "  F_hat " << std::setw(12) << sq.normal_force / scales.force
@@ -181,15 +215,6 @@ namespace viscoslide
     else if (progress != nullptr)
       pcout << "  [" << progress->report(done) << "]";
     pcout << std::endl;
-
-    if (prm.output.profile_every > 0 &&
-        step_number % prm.output.profile_every == 0)
-      write_profile("surface_profile-" +
-                    Utilities::int_to_string(step_number, 5) + ".csv");
-    if (prm.output.write_fields && prm.output.fields_every > 0 &&
-        step_number % prm.output.fields_every == 0)
-      write_fields();
-    ++step_number;
   }
 
 

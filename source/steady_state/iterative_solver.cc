@@ -267,41 +267,40 @@ namespace viscoslide
   }
 
 
-  // A~ = A - sum_K B_K D_K^-1 C_K on the owned displacement rows, node by
-  // node, and ML's hierarchy on it.
   template <int dim>
   void
-  SteadyIterativeSolver<dim>::setup_displacement_block(
+  SteadyIterativeSolver<dim>::eliminate_strains(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    if (!relaxation)
+    // B D_K^-1 C as J (D_K^-1 J), D_K^-1 the inverses of D's diagonal
+    // blocks on the strain rows (zero on the displacement's).
+    const Epetra_CrsMatrix &j = matrix.trilinos_matrix();
+    Epetra_CrsMatrix        inverse(Copy, j.RowMap(), 0);
+    std::vector<int>        columns;
+    for (const StrainBlock &b : blocks)
       {
-        // B D_K^-1 C as J (D_K^-1 J), D_K^-1 the inverses of D's diagonal
-        // blocks on the strain rows (zero on the displacement's): the
-        // strain eliminated cell by cell.
-        const Epetra_CrsMatrix &j = matrix.trilinos_matrix();
-        Epetra_CrsMatrix        inverse(Copy, j.RowMap(), 0);
-        std::vector<int>        columns;
-        for (const StrainBlock &b : blocks)
-          {
-            columns.clear();
-            for (const unsigned int p : b.rows)
-              columns.push_back(owned.nth_index_in_set(p));
-            for (unsigned int i = 0; i < b.rows.size(); ++i)
-              inverse.InsertGlobalValues(columns[i],
-                                         columns.size(),
-                                         &b.inverse(i, 0),
-                                         columns.data());
-          }
-        inverse.FillComplete(j.DomainMap(), j.RangeMap());
-        Epetra_CrsMatrix eliminated(Copy, j.RowMap(), 0);
-        EpetraExt::MatrixMatrix::Multiply(inverse, false, j, false, eliminated);
-        relaxation = std::make_unique<Epetra_CrsMatrix>(Copy, j.RowMap(), 0);
-        EpetraExt::MatrixMatrix::Multiply(
-          j, false, eliminated, false, *relaxation);
+        columns.clear();
+        for (const unsigned int p : b.rows)
+          columns.push_back(owned.nth_index_in_set(p));
+        for (unsigned int i = 0; i < b.rows.size(); ++i)
+          inverse.InsertGlobalValues(columns[i],
+                                     columns.size(),
+                                     &b.inverse(i, 0),
+                                     columns.data());
       }
+    inverse.FillComplete(j.DomainMap(), j.RangeMap());
+    Epetra_CrsMatrix eliminated(Copy, j.RowMap(), 0);
+    EpetraExt::MatrixMatrix::Multiply(inverse, false, j, false, eliminated);
+    relaxation = std::make_unique<Epetra_CrsMatrix>(Copy, j.RowMap(), 0);
+    EpetraExt::MatrixMatrix::Multiply(j, false, eliminated, false, *relaxation);
+  }
 
-    amg.reset(); // before the matrix it was built on
+
+  template <int dim>
+  void
+  SteadyIterativeSolver<dim>::assemble_displacement_block(
+    const TrilinosWrappers::SparseMatrix &matrix)
+  {
     const Epetra_CrsMatrix &a       = matrix.trilinos_matrix();
     const Epetra_CrsMatrix &r       = *relaxation;
     const std::vector<bool> kept_a  = displacement_columns(a);
@@ -349,6 +348,20 @@ namespace viscoslide
                                   columns.data());
       }
     block->FillComplete(*map, *map);
+  }
+
+
+  // A~ = A - sum_K B_K D_K^-1 C_K on the owned displacement rows, node by
+  // node, and ML's hierarchy on it.
+  template <int dim>
+  void
+  SteadyIterativeSolver<dim>::setup_displacement_block(
+    const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    if (!relaxation)
+      eliminate_strains(matrix);
+    amg.reset(); // before the matrix it was built on
+    assemble_displacement_block(matrix);
 
     Teuchos::ParameterList list;
     ML_Epetra::SetDefaults("SA", list);

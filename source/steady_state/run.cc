@@ -106,6 +106,53 @@ namespace viscoslide
     }
 
 
+    // The 3D approach at rest from Loading/Initial approach to Final
+    // approach, the law's attraction switched on there (homotopy, if the
+    // law is adhesive), then the force held or brought to the Target load.
+    void
+    approach_at_rest(SteadyStateSolver<3>            &steady,
+                     SurfaceCoupling<3>              &coupling,
+                     AttractionHomotopy              *homotopy,
+                     const Parameters::AllParameters &prm,
+                     const Scales                    &scales)
+    {
+      const auto   nothing = [] {};
+      const double last    = prm.loading.final_approach;
+      // In steps of Approach increment: a whole step into the traction
+      // law's wall costs Newton many iterations to climb out of.
+      for (double d = prm.loading.initial_approach; d < last;)
+        {
+          d = std::min(last, d + prm.loading.increment);
+          if (!steady.continue_to_load(d * scales.eps, nothing))
+            throw std::runtime_error(
+              "the approach at rest did not converge at delta_hat = " +
+              std::to_string(d) +
+              " on its way to 'Loading/Final "
+              "approach' = " +
+              std::to_string(last));
+        }
+      if (homotopy && !steady.continue_in_attraction(
+                        [&](const double s) { homotopy->set_attraction(s); }))
+        throw std::runtime_error(
+          "the adhesive contact at rest did not follow the law's "
+          "attraction at 'Loading/Final approach' = " +
+          std::to_string(last) +
+          " (a larger approach gives a wider contact to start from)");
+      hold_present_force(prm,
+                         scales,
+                         coupling,
+                         steady.quantities().normal_force,
+                         steady.approach());
+      if (coupling.force_control() && prm.loading.has_target_load() &&
+          !steady.continue_to_load(prm.loading.target_load * scales.force,
+                                   nothing))
+        throw std::runtime_error(
+          "the approach at rest did not converge on its way to "
+          "'Loading/Target load' = " +
+          std::to_string(prm.loading.target_load));
+    }
+
+
     // In 3D the steady-state solver approaches at rest (V_hat = 0, the
     // relaxed solid) itself: under displacement control from
     // Loading/Initial approach to Final approach (an adhesive law on its
@@ -163,41 +210,7 @@ namespace viscoslide
                                     0.);
           pcout << "Initial mesh: " << triangulation.n_global_active_cells()
                 << " cells, " << steady.n_unknowns() << " dofs" << std::endl;
-          const auto   nothing = [] {};
-          const double last    = prm.loading.final_approach;
-          // In steps of Approach increment: a whole step into the traction
-          // law's wall costs Newton many iterations to climb out of.
-          for (double d = prm.loading.initial_approach; d < last;)
-            {
-              d = std::min(last, d + prm.loading.increment);
-              if (!steady.continue_to_load(d * scales.eps, nothing))
-                throw std::runtime_error(
-                  "the approach at rest did not converge at delta_hat = " +
-                  std::to_string(d) +
-                  " on its way to 'Loading/Final "
-                  "approach' = " +
-                  std::to_string(last));
-            }
-          if (homotopy && !steady.continue_in_attraction([&](const double s) {
-                homotopy->set_attraction(s);
-              }))
-            throw std::runtime_error(
-              "the adhesive contact at rest did not follow the law's "
-              "attraction at 'Loading/Final approach' = " +
-              std::to_string(last) +
-              " (a larger approach gives a wider contact to start from)");
-          hold_present_force(prm,
-                             scales,
-                             coupling,
-                             steady.quantities().normal_force,
-                             steady.approach());
-          if (coupling.force_control() && prm.loading.has_target_load() &&
-              !steady.continue_to_load(prm.loading.target_load * scales.force,
-                                       nothing))
-            throw std::runtime_error(
-              "the approach at rest did not converge on its way to "
-              "'Loading/Target load' = " +
-              std::to_string(prm.loading.target_load));
+          approach_at_rest(steady, coupling, homotopy.get(), prm, scales);
         }
       run_stations_of(steady, parts, station, resume);
       Checkpoint::remove(parts.writer.path(""), parts.comm);

@@ -121,6 +121,13 @@ namespace viscoslide
     setup_strain_blocks(const TrilinosWrappers::SparseMatrix &matrix);
     void
     setup_displacement_block(const TrilinosWrappers::SparseMatrix &matrix);
+    // B D^-1 C, the strain eliminated cell by cell (made once: B, C and D
+    // do not change with the Newton iterate).
+    void
+    eliminate_strains(const TrilinosWrappers::SparseMatrix &matrix);
+    // A - B D^-1 C on the owned displacement rows.
+    void
+    assemble_displacement_block(const TrilinosWrappers::SparseMatrix &matrix);
     std::vector<bool>
     displacement_columns(const Epetra_CrsMatrix &m) const;
     // A line every 10 s of a long solve: its residual and the time left.

@@ -2,10 +2,15 @@
 """Compares two steady_state.csv files row by row (matched by V_hat and
 load): prints, per speed, mu (the x force on the indenter over F_n),
 mu_contact_set (the paper's eq. 2 over the contact set), mu_energy and
-L_hat of both and their relative differences, e.g. the finite-element and
-the boundary-element curve of one case (doc/boundary_element.md).
+L_hat (A_hat in 3D) of both and their relative differences, e.g. the
+finite-element and the boundary-element curve of one case
+(doc/boundary_element.md), or a curve against one of the reference
+curves in shared/reference (matched by V_hat alone: they are at one load,
+spelt Vhat, Fhat and Lhat in 2D).
 
-  scripts/compare_curves A/steady_state.csv B/steady_state.csv"""
+  scripts/compare_curves A/steady_state.csv B/steady_state.csv
+  scripts/compare_curves output/sphere_friction/steady_state.csv \
+      ../shared/reference/sphere_muT3_F1_R100.csv"""
 
 import sys
 
@@ -16,18 +21,31 @@ def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2:
         sys.exit(__doc__)
-    compare(tables.read(argv[0], text=True), tables.read(argv[1], text=True))
+    compare(*(normalised(tables.read(path, text=True)) for path in argv))
+
+
+def normalised(rows):
+    """The rows with the reference curves' 2D spellings as the program's,
+    without the speeds 0 and inf (the elastic limits), which no run has."""
+    rename = {'Vhat': 'V_hat', 'Fhat': 'F_n_hat', 'F_hat': 'F_n_hat', 'Lhat': 'L_hat'}
+    rows = [{rename.get(k, k): v for k, v in r.items()} for r in rows]
+    return [r for r in rows if 0 < float(r['V_hat']) < float('inf')]
 
 
 def compare(a, b):
     """Prints the rows of a and b that share V_hat and load, and the worst
     relative differences (cells as written: V_hat printed as in a)."""
     # The load that the control holds: delta under displacement control.
-    load = lambda r: 'delta_hat' if r['control'] == 'displacement' else 'F_n_hat'
-    key = lambda r: (round(float(r['V_hat']), 9), round(float(r[load(r)]), 6))
+    # A reference curve has no control column: it is at one load, and its
+    # rows are matched by the speed alone (to the digits the files share).
+    if 'control' in a[0] and 'control' in b[0]:
+        load = lambda r: 'delta_hat' if r['control'] == 'displacement' else 'F_n_hat'
+        key = lambda r: (round(float(r['V_hat']), 9), round(float(r[load(r)]), 6))
+    else:
+        key = lambda r: float(f"{float(r['V_hat']):.5g}")
     b_rows = {key(r): r for r in b}
     # A file written before mu_contact_set existed has no such column.
-    quantities = [q for q in ['mu', 'mu_contact_set', 'mu_energy', 'L_hat']
+    quantities = [q for q in ['mu', 'mu_contact_set', 'mu_energy', 'L_hat', 'A_hat']
                   if q in a[0] and q in b[0]]
     print('V_hat ' + ' '.join(f'{q}_A {q}_B diff' for q in quantities))
     worst = {q: 0. for q in quantities}

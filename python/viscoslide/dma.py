@@ -30,14 +30,24 @@ example files of pyvisco, NREL, BSD-3-Clause).
    decade where the data's scatter keeps that above the tolerance; then
    its smallest terms are dropped one by one while it still is. Values far off the fit on all the times (beyond
    2.5 robust standard deviations of the relative residuals) are weighted
-   down (Huber) and left out of the error, their number printed.
+   down (Huber) and left out of the error, their number printed. A fit
+   whose error is still above --tolerance is written with a warning, on
+   stderr and in the header of PREFIX_prony.csv, naming the decade of
+   omega a_T where its RMS error is largest.
 4. Written: PREFIX_prony.csv (the columns tau_over_tau and weight that
    'Material/Prony file' reads, tau over --tau-ref, default 1 s, and
    E_k in Pa), PREFIX_shift.csv (T, log_aT measured, WLF, Arrhenius),
    PREFIX_master.png (data against fit) and PREFIX_shift.png; printed:
    E0 (the relaxed modulus), Einf, E0/Einf (for 'Material/E0 over
    Einf'), the WLF constants, Ea, the number of terms and the fit's
-   errors."""
+   errors.
+
+Refused, with exit 1 and a message naming the file's line or the option:
+a missing column or unit, a value that is not a finite number (nan, inf)
+or a negative modulus, a single temperature, a --reference-temperature
+outside the sweeps' temperatures (the shift there would be extrapolated),
+and neighbouring sweeps that come out more than 10 decades apart (E' too
+flat to be superposed)."""
 import argparse
 import math
 import os
@@ -45,6 +55,7 @@ import sys
 
 R_GAS = 8.314462618  # J/(mol K)
 PRESSURE = {'Pa': 1., 'kPa': 1e3, 'MPa': 1e6, 'GPa': 1e9}
+MAX_PAIR_SHIFT = 10.  # decades between neighbouring isotherms
 
 
 class DmaError(ValueError):
@@ -57,13 +68,15 @@ def read(path, poisson=0.5):
     import numpy as np
     try:
         with open(path, encoding='utf-8-sig') as f:
-            lines = [l.strip() for l in f if l.strip()]
+            # Blank lines are skipped but counted, so that a message names
+            # the line an editor shows.
+            lines = [(k, l.strip()) for k, l in enumerate(f, start=1) if l.strip()]
     except OSError as e:
         raise DmaError(f'cannot read {path}: {e.strerror}')
     if len(lines) < 3:
         raise DmaError(f'{path}: a header, a units line and data are needed')
-    names = [n.strip() for n in lines[0].split(',')]
-    units = [u.strip() for u in lines[1].split(',')]
+    names = [n.strip() for n in lines[0][1].split(',')]
+    units = [u.strip() for u in lines[1][1].split(',')]
     kind = 'G' if 'G_stor' in names and 'E_stor' not in names else 'E'
     needed = ['f', f'{kind}_stor', f'{kind}_loss', 'T', 'Set']
     for n in needed:
@@ -82,12 +95,20 @@ def read(path, poisson=0.5):
         raise DmaError(f'{path}: unknown unit {unit["T"]!r} of column T (C or K)')
     to_modulus = 2 * (1 + poisson) if kind == 'G' else 1.
     sets = {}
-    for k, line in enumerate(lines[2:], start=3):
+    for k, line in lines[2:]:
         v = line.split(',')
+        if len(v) <= max(col.values()):
+            raise DmaError(f'{path}, line {k}: {len(v)} entries for {len(names)} columns')
         try:
             f, s, l, T = (float(v[col[n]]) for n in needed[:4])
-        except (ValueError, IndexError):
+        except ValueError:
             raise DmaError(f'{path}, line {k}: not a number in {needed[:4]}')
+        # float() takes nan and inf, which no comparison below refuses and
+        # which would reach the least squares of the fit.
+        for n, x in zip(needed[:4], (f, s, l, T)):
+            if not math.isfinite(x):
+                raise DmaError(f'{path}, line {k}: column {n} is {v[col[n]].strip()!r}, '
+                               'not a finite number')
         if f <= 0 or s <= 0 or l < 0:
             raise DmaError(f'{path}, line {k}: frequency and storage modulus must be positive '
                            f'and the loss modulus non-negative ({f}, {s}, {l})')
@@ -155,11 +176,27 @@ def shift_factors(isotherms, T_ref=None):
     temps = [isotherms[k][0] for k in order]
     if T_ref is None:
         T_ref = temps[len(temps) // 2]
+    if not temps[0] <= T_ref <= temps[-1]:
+        # Beyond the sweeps the offset below would be clamped to the end
+        # sweep's: the curve would be that sweep's, labelled T_ref.
+        raise DmaError(f'--reference-temperature {T_ref - 273.15:g} C is outside the temperatures '
+                       f'of the sweeps, {temps[0] - 273.15:g} to {temps[-1] - 273.15:g} C: the '
+                       'master curve there would be extrapolated')
     r = min(range(len(order)), key=lambda i: abs(temps[i] - T_ref))
     log_a = {order[r]: 0.}
     for i in list(range(r + 1, len(order))) + list(range(r - 1, -1, -1)):
         j = i - 1 if i > r else i + 1
-        log_a[order[i]] = log_a[order[j]] + pair_shift(isotherms[order[j]], isotherms[order[i]])
+        step = pair_shift(isotherms[order[j]], isotherms[order[i]])
+        # A sweep whose E' barely rises (a plateau, within its scatter) is
+        # extended across a gap by a near-infinite inverse slope; no
+        # neighbouring isotherms of a real measurement are MAX_PAIR_SHIFT
+        # decades apart.
+        if not abs(step) <= MAX_PAIR_SHIFT:
+            lo, hi = sorted((temps[i] - 273.15, temps[j] - 273.15))
+            raise DmaError(f'the sweeps at {lo:g} and {hi:g} C come out {abs(step):.3g} decades '
+                           f'apart (more than {MAX_PAIR_SHIFT:g}): their storage moduli are too '
+                           'flat (against their scatter) to be superposed')
+        log_a[order[i]] = log_a[order[j]] + step
     # The reference temperature may lie between sweeps: the shift there by
     # linear interpolation is subtracted.
     T = [isotherms[k][0] for k in order]
@@ -202,7 +239,7 @@ def relative_residuals(omega, storage, loss, E_relaxed, E, tau):
 
 
 def fit_prony(omega, storage, loss, tolerance=0.05, per_decade=2):
-    """(E_relaxed, E_k, tau_k, error, outliers): the Prony series with the
+    """(E_relaxed, E_k, tau_k, error, outliers, counted): the Prony series with the
     fewest terms whose RMS relative error in E' and E'' is within
     tolerance (or within 10 % of the error of all the times, where the
     data's scatter keeps that above the tolerance): the sparsest of the
@@ -212,7 +249,8 @@ def fit_prony(omega, storage, loss, tolerance=0.05, per_decade=2):
     robust (Huber): a value whose relative residual on all the times
     exceeds 2.5 robust standard deviations (1.4826 times the median
     absolute residual) is weighted down in proportion; error is the RMS
-    over the values not weighted down, outliers their count."""
+    over the values not weighted down (counted: True for those, E' values
+    first, then E''), outliers the count of the others."""
     import numpy as np
     from scipy.optimize import nnls
     lo = math.floor(math.log10(1 / omega.max()))
@@ -247,7 +285,22 @@ def fit_prony(omega, storage, loss, tolerance=0.05, per_decade=2):
         if trial[3] > target:
             break
         best = trial
-    return best + (int((weight < 1).sum()),)
+    return best + (int((weight < 1).sum()), weight == 1)
+
+
+def worst_band(omega, storage, loss, E_relaxed, E, tau, counted):
+    """(omega_lo, omega_hi, rms, n): the decade of omega (from a power of
+    ten to the next) where the RMS relative error of the fit's E' and E''
+    over the counted values is largest, and the number of those values."""
+    import numpy as np
+    r = relative_residuals(omega, storage, loss, E_relaxed, E, tau)
+    decade = np.tile(np.floor(np.log10(omega)), 2)
+    bands = []
+    for d in np.unique(decade[counted]):
+        inside = counted & (decade == d)
+        bands.append((float(np.sqrt(np.mean(r[inside] ** 2))), d, int(inside.sum())))
+    rms, d, n = max(bands)
+    return 10. ** d, 10. ** (d + 1), rms, n
 
 
 def master_curve(isotherms, log_a):
@@ -286,8 +339,19 @@ def main(argv=None):
     C1, C2, wlf_rms = fit_wlf(T, la, T_ref)
     Ea, arr_rms = fit_arrhenius(T, la, T_ref)
     omega, storage, loss = master_curve(isotherms, log_a)
-    E_relaxed, E, tau, error, outliers = fit_prony(omega, storage, loss, a.tolerance)
-    write(prefix, T, la, T_ref, C1, C2, Ea, E_relaxed, E, tau, a.tau_ref)
+    E_relaxed, E, tau, error, outliers, counted = fit_prony(omega, storage, loss, a.tolerance)
+    warning = None
+    if error > a.tolerance:
+        lo, hi, band_rms, n = worst_band(omega, storage, loss, E_relaxed, E, tau, counted)
+        warning = (f'the Prony fit misses its tolerance: RMS relative error of E\' and E\'\' '
+                   f'{error:.3g} against --tolerance {a.tolerance:g}; the misfit is largest at '
+                   f'omega a_T {lo:.3g} to {hi:.3g} rad/s at {T_ref - 273.15:g} C (RMS {band_rms:.3g} '
+                   f'over its {n} values)')
+        print(f'scripts/dma: warning: {warning}', file=sys.stderr)
+    try:
+        write(prefix, T, la, T_ref, C1, C2, Ea, E_relaxed, E, tau, a.tau_ref, warning)
+    except OSError as e:
+        sys.exit(f'scripts/dma: cannot write {e.filename}: {e.strerror}')
     Einf = E_relaxed + E.sum()
     print(f'master curve at T_ref = {T_ref - 273.15:g} C: {len(isotherms)} isotherms, '
           f'omega {omega.min():.3g} to {omega.max():.3g} rad/s')
@@ -302,7 +366,7 @@ def main(argv=None):
     plot(prefix, T, la, T_ref, C1, C2, Ea, omega, storage, loss, E_relaxed, E, tau)
 
 
-def write(prefix, T, la, T_ref, C1, C2, Ea, E_relaxed, E, tau, tau_ref):
+def write(prefix, T, la, T_ref, C1, C2, Ea, E_relaxed, E, tau, tau_ref, warning=None):
     x = lambda T: 1 / T - 1 / T_ref
     with open(prefix + '_prony.csv', 'w') as f:
         Einf = E_relaxed + E.sum()
@@ -310,6 +374,7 @@ def write(prefix, T, la, T_ref, C1, C2, Ea, E_relaxed, E, tau, tau_ref):
                 f'# tau_over_tau: relaxation time over {tau_ref:g} s; weight: E_k in Pa.\n'
                 f'# With it: Material/E0 over Einf = {E_relaxed / Einf:.6g} (E0 {E_relaxed:.6g} Pa, '
                 f'Einf {Einf:.6g} Pa).\n'
+                + (f'# Warning: {warning}.\n' if warning else '') +
                 'tau_over_tau,weight\n')
         for t, e in zip(tau, E):
             f.write(f'{t / tau_ref:.6g},{e:.6g}\n')

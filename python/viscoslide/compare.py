@@ -21,15 +21,7 @@ def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2:
         sys.exit(__doc__)
-    compare(*(normalised(tables.read(path, text=True)) for path in argv))
-
-
-def normalised(rows):
-    """The rows with the reference curves' 2D spellings as the program's,
-    without the speeds 0 and inf (the elastic limits), which no run has."""
-    rename = {'Vhat': 'V_hat', 'Fhat': 'F_n_hat', 'F_hat': 'F_n_hat', 'Lhat': 'L_hat'}
-    rows = [{rename.get(k, k): v for k, v in r.items()} for r in rows]
-    return [r for r in rows if 0 < float(r['V_hat']) < float('inf')]
+    compare(*(tables.read_reference(path, text=True) for path in argv))
 
 
 def compare(a, b):

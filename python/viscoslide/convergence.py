@@ -147,8 +147,8 @@ def measure(name, work, viscoslide=VISCOSLIDE, root=ROOT):
     """Runs the study's levels: {(V_hat, quantity): (values per level,
     reference)} for mu and, where the reference has it, L_hat."""
     source, reference_file, speeds, levels, other = STUDIES[name]
-    reference = {round(r['Vhat'], 6): r for r in
-                 tables.read(os.path.join(root, '..', 'shared', 'reference', reference_file))}
+    reference = {round(r['V_hat'], 6): r for r in
+                 tables.read_reference(os.path.join(root, '..', 'shared', 'reference', reference_file))}
     results = [run_level(viscoslide, os.path.join(root, source), work,
                          f'{name}_level{k}', speeds, *level, other)
                for k, level in enumerate(levels)]
@@ -156,8 +156,8 @@ def measure(name, work, viscoslide=VISCOSLIDE, root=ROOT):
     for i, v in enumerate(speeds):
         ref = reference[round(float(v), 6)]
         found[float(v), 'mu'] = ([r[i]['mu'] for r in results], ref['mu'])
-        if 'Lhat' in ref:
-            found[float(v), 'L_hat'] = ([r[i]['L_hat'] for r in results], ref['Lhat'])
+        if 'L_hat' in ref:
+            found[float(v), 'L_hat'] = ([r[i]['L_hat'] for r in results], ref['L_hat'])
     return found
 
 

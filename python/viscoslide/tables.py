@@ -37,6 +37,16 @@ def read(path, text=False):
     return [{k: number(v) for k, v in r.items()} for r in rows]
 
 
+def read_reference(path, text=False):
+    """The rows of one of the independent reference curves
+    (shared/reference) in the program's spellings (the 2D curves write
+    Vhat, Fhat and Lhat, the 3D ones F_hat), without the speeds 0 and inf
+    (the elastic limits), which no run has."""
+    rename = {'Vhat': 'V_hat', 'Fhat': 'F_n_hat', 'F_hat': 'F_n_hat', 'Lhat': 'L_hat'}
+    rows = [{rename.get(k, k): v for k, v in r.items()} for r in read(path, text)]
+    return [r for r in rows if 0 < float(r['V_hat']) < float('inf')]
+
+
 def steady(row):
     """Whether a row is a converged steady state (steady = 1); a table
     without the column counts as steady."""

@@ -4,10 +4,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <viscoslide/blas_kernels.h>
-#include <viscoslide/driver.h>
-#include <viscoslide/output.h>
-#include <viscoslide/parameters.h>
+#include <viscoslide/driver/driver.h>
+#include <viscoslide/io/output.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/numerics/blas_kernels.h>
 
 #include <algorithm>
 #include <fstream>

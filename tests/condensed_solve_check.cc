@@ -17,7 +17,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <viscoslide/linear_solver.h>
+#include <viscoslide/numerics/linear_solver.h>
 
 #include <cmath>
 #include <iostream>

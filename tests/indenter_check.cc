@@ -6,7 +6,7 @@
 //   equal NAME REFERENCE D   largest |h - h_reference| over |x| <= 1000
 //   refused CASE 0|1         whether a bad profile is refused at build time
 // tests/indenter_shapes.check compares them with what they must be.
-#include <viscoslide/indenter.h>
+#include <viscoslide/physics/indenter.h>
 
 #include <cmath>
 #include <cstdio>

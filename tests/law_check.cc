@@ -4,7 +4,7 @@
 // (Simpson's rule to g = 2000), the peak attraction and the largest
 // mismatch between derivative() and a central difference of traction().
 // tests/interaction_laws.check compares them with their exact values.
-#include <viscoslide/interaction_law.h>
+#include <viscoslide/physics/interaction_law.h>
 
 #include <cmath>
 #include <cstdio>

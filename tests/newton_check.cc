@@ -8,7 +8,7 @@
 // them to the contract: converged within ten tolerances, given up beyond.
 #include <deal.II/base/conditional_ostream.h>
 
-#include <viscoslide/newton.h>
+#include <viscoslide/numerics/newton.h>
 
 #include <cmath>
 #include <cstdio>

@@ -25,10 +25,10 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <viscoslide/indenter.h>
-#include <viscoslide/interaction_law.h>
-#include <viscoslide/mesh.h>
-#include <viscoslide/postprocessing.h>
+#include <viscoslide/io/postprocessing.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/physics/indenter.h>
+#include <viscoslide/physics/interaction_law.h>
 
 #include <cmath>
 #include <cstdio>

@@ -29,15 +29,15 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <viscoslide/case.h>
-#include <viscoslide/indenter.h>
-#include <viscoslide/interaction_law.h>
-#include <viscoslide/linear_solver.h>
-#include <viscoslide/material.h>
-#include <viscoslide/output.h>
-#include <viscoslide/parameters.h>
-#include <viscoslide/postprocessing.h>
-#include <viscoslide/steady_state_table.h>
+#include <viscoslide/driver/case.h>
+#include <viscoslide/io/output.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/io/postprocessing.h>
+#include <viscoslide/io/steady_state_table.h>
+#include <viscoslide/numerics/linear_solver.h>
+#include <viscoslide/physics/indenter.h>
+#include <viscoslide/physics/interaction_law.h>
+#include <viscoslide/physics/material.h>
 #include <viscoslide/surface_coupling.h>
 
 #include <boost/serialization/access.hpp>

@@ -9,10 +9,10 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
-#include <viscoslide/output.h>
-#include <viscoslide/parameters.h>
-#include <viscoslide/postprocessing.h>
-#include <viscoslide/steady_state_table.h>
+#include <viscoslide/io/output.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/io/postprocessing.h>
+#include <viscoslide/io/steady_state_table.h>
 
 #include <functional>
 #include <string>

@@ -36,13 +36,13 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <viscoslide/indenter.h>
-#include <viscoslide/interaction_law.h>
-#include <viscoslide/linear_solver.h>
-#include <viscoslide/load_control.h>
-#include <viscoslide/newton.h>
-#include <viscoslide/parameters.h>
-#include <viscoslide/postprocessing.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/io/postprocessing.h>
+#include <viscoslide/numerics/linear_solver.h>
+#include <viscoslide/numerics/newton.h>
+#include <viscoslide/physics/indenter.h>
+#include <viscoslide/physics/interaction_law.h>
+#include <viscoslide/physics/load_control.h>
 
 #include <boost/serialization/access.hpp>
 
@@ -275,8 +275,8 @@ namespace viscoslide
 
     // The locally owned unknowns the face terms act on: u_y (component
     // vertical<dim> of the element of `dof_handler`) on the top surface,
-    // less the constrained ones. Two Jacobians that differ in their surface terms
-    // alone differ only on these rows and columns (ReusedFactorization).
+    // less the constrained ones. Two Jacobians that differ in their surface
+    // terms alone differ only on these rows and columns (ReusedFactorization).
     IndexSet
     surface_unknowns(const DoFHandler<dim>           &dof_handler,
                      const AffineConstraints<double> &constraints) const;

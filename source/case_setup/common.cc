@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/case_setup/common.h>
-#include <viscoslide/scales.h>
+#include <viscoslide/physics/scales.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // Entries of different sections that contradict each other.
 #include <viscoslide/case_setup.h>
 #include <viscoslide/case_setup/common.h>
-#include <viscoslide/indenter.h>
-#include <viscoslide/input.h>
+#include <viscoslide/io/input.h>
+#include <viscoslide/physics/indenter.h>
 
 #include <algorithm>
 #include <cmath>

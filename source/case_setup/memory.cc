@@ -5,8 +5,8 @@
 #include <viscoslide/boundary_element/grid.h>
 #include <viscoslide/case_setup.h>
 #include <viscoslide/case_setup/common.h>
-#include <viscoslide/mesh.h>
-#include <viscoslide/scales.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/physics/scales.h>
 
 #include <unistd.h>
 

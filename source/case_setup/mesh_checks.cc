@@ -3,8 +3,8 @@
 // depth, the contact within the block.
 #include <viscoslide/case_setup.h>
 #include <viscoslide/case_setup/common.h>
-#include <viscoslide/indenter.h>
-#include <viscoslide/input.h>
+#include <viscoslide/io/input.h>
+#include <viscoslide/physics/indenter.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // The block fitted to the wake of the fastest speed.
 #include <viscoslide/case_setup.h>
 #include <viscoslide/case_setup/common.h>
-#include <viscoslide/input.h>
+#include <viscoslide/io/input.h>
 
 #include <algorithm>
 #include <sstream>

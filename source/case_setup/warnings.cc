@@ -5,8 +5,8 @@
 // the error, rather than quoting a number that would go stale.
 #include <viscoslide/case_setup.h>
 #include <viscoslide/case_setup/common.h>
-#include <viscoslide/input.h>
-#include <viscoslide/scales.h>
+#include <viscoslide/io/input.h>
+#include <viscoslide/physics/scales.h>
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <viscoslide/contact_problem.h>
-#include <viscoslide/mesh.h>
+#include <viscoslide/numerics/mesh.h>
 
 namespace viscoslide
 {

@@ -7,9 +7,9 @@
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/vector.hpp>
 
-#include <viscoslide/checkpoint.h>
 #include <viscoslide/contact_problem.h>
-#include <viscoslide/mesh.h>
+#include <viscoslide/io/checkpoint.h>
+#include <viscoslide/numerics/mesh.h>
 
 #include <sstream>
 

@@ -5,9 +5,9 @@
 
 #include <deal.II/fe/fe_q.h>
 
-#include <viscoslide/checkpoint.h>
 #include <viscoslide/contact_problem.h>
-#include <viscoslide/mesh.h>
+#include <viscoslide/io/checkpoint.h>
+#include <viscoslide/numerics/mesh.h>
 
 #include <cmath>
 #include <filesystem>

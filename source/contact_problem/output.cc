@@ -6,8 +6,8 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <viscoslide/contact_problem.h>
-#include <viscoslide/field_recovery.h>
-#include <viscoslide/surface_fields.h>
+#include <viscoslide/io/field_recovery.h>
+#include <viscoslide/io/surface_fields.h>
 
 #include <array>
 #include <iomanip>

@@ -9,7 +9,7 @@
 
 #include <deal.II/meshworker/mesh_loop.h>
 
-#include <viscoslide/mesh.h>
+#include <viscoslide/numerics/mesh.h>
 #include <viscoslide/steady_state/solver.h>
 #include <viscoslide/steady_state/viscous_strain.h>
 

@@ -7,8 +7,8 @@
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/vector.hpp>
 
-#include <viscoslide/checkpoint.h>
-#include <viscoslide/mesh.h>
+#include <viscoslide/io/checkpoint.h>
+#include <viscoslide/numerics/mesh.h>
 #include <viscoslide/steady_state/solver.h>
 
 #include <sstream>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // SteadyStateSolver: one step of speed or load, and the continuation in
 // speed, in load and through the attraction before contact.
-#include <viscoslide/newton.h>
+#include <viscoslide/numerics/newton.h>
 #include <viscoslide/steady_state/solver.h>
 
 #include <cmath>

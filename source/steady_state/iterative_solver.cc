@@ -12,8 +12,8 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
-#include <viscoslide/heartbeat.h>
-#include <viscoslide/output.h>
+#include <viscoslide/io/output.h>
+#include <viscoslide/numerics/heartbeat.h>
 #include <viscoslide/steady_state/iterative_solver.h>
 
 #include <EpetraExt_MatrixMatrix.h>

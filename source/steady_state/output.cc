@@ -5,10 +5,10 @@
 
 #include <deal.II/numerics/data_out.h>
 
-#include <viscoslide/field_recovery.h>
+#include <viscoslide/io/field_recovery.h>
+#include <viscoslide/io/surface_fields.h>
 #include <viscoslide/steady_state/solver.h>
 #include <viscoslide/steady_state/viscous_strain.h>
-#include <viscoslide/surface_fields.h>
 
 #include <cstdio>
 

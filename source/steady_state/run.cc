@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include <viscoslide/checkpoint.h>
 #include <viscoslide/contact_problem.h>
-#include <viscoslide/mesh.h>
+#include <viscoslide/io/checkpoint.h>
+#include <viscoslide/numerics/mesh.h>
 #include <viscoslide/steady_state/run.h>
 #include <viscoslide/steady_state/solver.h>
 

@@ -19,8 +19,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <viscoslide/mesh.h>
-#include <viscoslide/newton.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/numerics/newton.h>
 #include <viscoslide/steady_state/solver.h>
 #include <viscoslide/steady_state/viscous_strain.h>
 

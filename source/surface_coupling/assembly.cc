@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The surface terms of the traction law and the load control, assembled
 // into the system, and the law at a surface point.
-#include <viscoslide/mesh.h>
-#include <viscoslide/mpi_gather.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/numerics/mpi_gather.h>
 #include <viscoslide/surface_coupling.h>
 
 #include <algorithm>

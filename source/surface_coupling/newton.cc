@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Newton's method and the relaxation on the system bordered by the load
 // control.
-#include <viscoslide/mesh.h>
-#include <viscoslide/mpi_gather.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/numerics/mpi_gather.h>
 #include <viscoslide/surface_coupling.h>
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The surface's unknowns, the window about the contact, the contact edges
 // and the predicted closing of the gap.
-#include <viscoslide/mesh.h>
-#include <viscoslide/mpi_gather.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/numerics/mpi_gather.h>
 #include <viscoslide/surface_coupling.h>
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The surface window's model for the reused factorization: the traction
 // law's terms on the window's faces as functions of its unknowns.
-#include <viscoslide/mesh.h>
-#include <viscoslide/mpi_gather.h>
+#include <viscoslide/numerics/mesh.h>
+#include <viscoslide/numerics/mpi_gather.h>
 #include <viscoslide/surface_coupling.h>
 
 #include <algorithm>

@@ -29,7 +29,7 @@
 #ifndef viscoslide_boundary_element_creep_h
 #define viscoslide_boundary_element_creep_h
 
-#include <viscoslide/material.h>
+#include <viscoslide/physics/material.h>
 
 #include <cmath>
 #include <utility>

@@ -29,7 +29,7 @@
 
 #include <viscoslide/boundary_element/compliance.h>
 #include <viscoslide/boundary_element/creep.h>
-#include <viscoslide/material.h>
+#include <viscoslide/physics/material.h>
 
 #include <vector>
 

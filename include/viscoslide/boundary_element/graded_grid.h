@@ -19,8 +19,8 @@
 
 #include <viscoslide/boundary_element/graded_compliance.h>
 #include <viscoslide/boundary_element/surface_grid.h>
-#include <viscoslide/indenter.h>
-#include <viscoslide/parameters.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/physics/indenter.h>
 
 #include <array>
 #include <functional>

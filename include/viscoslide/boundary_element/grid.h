@@ -6,7 +6,7 @@
 #ifndef viscoslide_boundary_element_grid_h
 #define viscoslide_boundary_element_grid_h
 
-#include <viscoslide/input.h>
+#include <viscoslide/io/input.h>
 
 #include <functional>
 #include <utility>

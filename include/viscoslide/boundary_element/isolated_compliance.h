@@ -23,7 +23,7 @@
 
 #include <viscoslide/boundary_element/compliance.h>
 #include <viscoslide/boundary_element/creep.h>
-#include <viscoslide/material.h>
+#include <viscoslide/physics/material.h>
 
 #include <array>
 #include <complex>

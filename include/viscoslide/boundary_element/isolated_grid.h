@@ -12,7 +12,7 @@
 #include <viscoslide/boundary_element/isolated_compliance.h>
 #include <viscoslide/boundary_element/multigrid_preconditioner.h>
 #include <viscoslide/boundary_element/uniform_grid.h>
-#include <viscoslide/parameters.h>
+#include <viscoslide/io/parameters.h>
 
 #include <memory>
 

@@ -24,8 +24,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
-#include <viscoslide/material.h>
-#include <viscoslide/parameters.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/physics/material.h>
 
 #include <array>
 #include <complex>

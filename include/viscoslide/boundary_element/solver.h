@@ -27,16 +27,16 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/surface_grid.h>
-#include <viscoslide/case.h>
-#include <viscoslide/indenter.h>
-#include <viscoslide/interaction_law.h>
-#include <viscoslide/load_control.h>
-#include <viscoslide/material.h>
-#include <viscoslide/newton.h>
-#include <viscoslide/output.h>
-#include <viscoslide/parameters.h>
+#include <viscoslide/driver/case.h>
+#include <viscoslide/io/output.h>
+#include <viscoslide/io/parameters.h>
+#include <viscoslide/io/steady_state_table.h>
+#include <viscoslide/numerics/newton.h>
+#include <viscoslide/physics/indenter.h>
+#include <viscoslide/physics/interaction_law.h>
+#include <viscoslide/physics/load_control.h>
+#include <viscoslide/physics/material.h>
 #include <viscoslide/steady_sliding.h>
-#include <viscoslide/steady_state_table.h>
 
 #include <functional>
 #include <memory>

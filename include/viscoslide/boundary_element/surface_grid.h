@@ -17,7 +17,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
-#include <viscoslide/postprocessing.h>
+#include <viscoslide/io/postprocessing.h>
 
 #include <memory>
 #include <ostream>

@@ -15,7 +15,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <viscoslide/boundary_element/surface_grid.h>
-#include <viscoslide/indenter.h>
+#include <viscoslide/physics/indenter.h>
 
 #include <array>
 

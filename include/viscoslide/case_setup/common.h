@@ -6,7 +6,7 @@
 #ifndef viscoslide_case_setup_common_h
 #define viscoslide_case_setup_common_h
 
-#include <viscoslide/parameters.h>
+#include <viscoslide/io/parameters.h>
 
 #include <initializer_list>
 #include <string>

@@ -44,7 +44,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <viscoslide/newton.h>
+#include <viscoslide/numerics/newton.h>
 
 #include <memory>
 #include <vector>

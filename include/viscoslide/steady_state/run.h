@@ -8,7 +8,7 @@
 #ifndef viscoslide_steady_state_run_h
 #define viscoslide_steady_state_run_h
 
-#include <viscoslide/case.h>
+#include <viscoslide/driver/case.h>
 
 namespace viscoslide
 {

@@ -281,6 +281,9 @@ namespace viscoslide
     // The steady_state.csv row of the last window.
     void
     report_slide(bool steady);
+    // The line that ends a slide: steady, or which test it failed.
+    void
+    say_slide_verdict(bool settled, bool balanced) const;
 
     // --- checkpoint and restart [checkpoint_restart.cc]
 

@@ -214,8 +214,20 @@ namespace viscoslide
 
     report_slide(steady);
     write_profile("surface_profile_steady.csv");
+    say_slide_verdict(settled, balanced);
+    coupling.hold_approach();
+  }
+
+
+  // Whether the slide ended steady, and if not which of the two tests
+  // (the window settled, the energy balanced over it) it failed.
+  void
+  ContactProblem::say_slide_verdict(const bool settled,
+                                    const bool balanced) const
+  {
+    const bool steady = settled && balanced;
     pcout << (steady ? "Steady state" : "NO steady state") << " after "
-          << committed.s - plan.s0 << " eps";
+          << committed.s - slide_plan.s0 << " eps";
     if (!settled)
       pcout << ": the window has not settled to 'Sliding/Steady-state "
                "tolerance' = "
@@ -228,7 +240,6 @@ namespace viscoslide
             << "): the wake is still changing, or the mesh does not resolve "
                "V tau and the contact edges";
     pcout << std::endl;
-    coupling.hold_approach();
   }
 
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/boundary_element/isolated_compliance.h>
+#include <viscoslide/numerics/fft_plans.h>
 
 #include <fftw3.h>
 
@@ -104,12 +105,15 @@ namespace viscoslide
       , line(fftw_alloc_real(rows))
       , line_spectrum(fftw_alloc_complex(rows / 2 + 1))
     {
-      forward =
-        fftw_plan_dft_r2c_2d(rows, columns, real, spectrum, FFTW_ESTIMATE);
-      backward =
-        fftw_plan_dft_c2r_2d(rows, columns, spectrum, real, FFTW_ESTIMATE);
-      line_forward =
-        fftw_plan_dft_r2c_1d(rows, line, line_spectrum, FFTW_ESTIMATE);
+      forward      = make_fft_plan([&](const unsigned int flags) {
+        return fftw_plan_dft_r2c_2d(rows, columns, real, spectrum, flags);
+      });
+      backward     = make_fft_plan([&](const unsigned int flags) {
+        return fftw_plan_dft_c2r_2d(rows, columns, spectrum, real, flags);
+      });
+      line_forward = make_fft_plan([&](const unsigned int flags) {
+        return fftw_plan_dft_r2c_1d(rows, line, line_spectrum, flags);
+      });
     }
     ~Convolution()
     {

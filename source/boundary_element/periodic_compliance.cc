@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/boundary_element/periodic_compliance.h>
+#include <viscoslide/numerics/fft_plans.h>
 
 #include <fftw3.h>
 
@@ -21,12 +22,12 @@ namespace viscoslide
       std::array<int, dim - 1> shape;
       for (unsigned int d = 0; d < dim - 1; ++d)
         shape[d] = n[d];
-      // Estimated plans: a measured plan is chosen by timing, so that a
-      // run's digits would depend on the machine's load.
-      forward =
-        fftw_plan_dft_r2c(dim - 1, shape.data(), real, spectrum, FFTW_ESTIMATE);
-      backward =
-        fftw_plan_dft_c2r(dim - 1, shape.data(), spectrum, real, FFTW_ESTIMATE);
+      forward  = make_fft_plan([&](const unsigned int flags) {
+        return fftw_plan_dft_r2c(dim - 1, shape.data(), real, spectrum, flags);
+      });
+      backward = make_fft_plan([&](const unsigned int flags) {
+        return fftw_plan_dft_c2r(dim - 1, shape.data(), spectrum, real, flags);
+      });
     }
     ~Plans()
     {

@@ -60,9 +60,13 @@ namespace viscoslide
   {
     const std::string file = fft_wisdom_file();
     std::error_code   error;
-    if (file.empty() || (std::filesystem::create_directories(
-                           std::filesystem::path(file).parent_path(), error),
-                         error))
+    if (file.empty())
+      return make(FFTW_ESTIMATE);
+    const std::filesystem::path folder =
+      std::filesystem::path(file).parent_path();
+    if (!folder.empty())
+      std::filesystem::create_directories(folder, error);
+    if (error)
       return make(FFTW_ESTIMATE);
     // Under the lock, so that two runs that first meet a size at once
     // (ctest -j, a study's groups) keep one plan for it.

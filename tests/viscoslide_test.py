@@ -26,15 +26,16 @@ def test_input(work, source):
         return f.read()
 
 
-def run(viscoslide, prm_text, work_dir, name, nproc=1, mpiexec='mpirun'):
-    """Writes NAME.prm into work_dir and runs viscoslide on it there."""
+def run(viscoslide, prm_text, work_dir, name, nproc=1, mpiexec='mpirun', env=None):
+    """Writes NAME.prm into work_dir and runs viscoslide on it there (in
+    the environment env, default this process's)."""
     path = os.path.join(work_dir, name + '.prm')
     with open(path, 'w') as f:
         f.write(prm_text)
     cmd = [viscoslide, '--overwrite', path]
     if nproc > 1:
         cmd = [mpiexec, '-np', str(nproc)] + cmd
-    return subprocess.run(cmd, cwd=work_dir, capture_output=True, text=True)
+    return subprocess.run(cmd, cwd=work_dir, env=env, capture_output=True, text=True)
 
 
 def retraction_pull_off(rows):

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/numerics/fft_plans.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 

@@ -25,7 +25,11 @@ namespace viscoslide
         "the contact and half its width beyond each edge, the wake behind "
         "it in the compliance; the grid follows the edges as they move. "
         "It reaches contacts 1e5 eps wide (R_hat 1e7) at a few thousand "
-        "points (doc/boundary_element.md, Graded grid).");
+        "points (doc/boundary_element.md, Graded grid). nested (3D, "
+        "half-space): the isolated window of Grid spacing whose cells "
+        "along the contact edge are divided Refinement x Refinement, "
+        "remade as the edge moves (doc/boundary_element.md, Nested "
+        "grid).");
       prm.declare_entry("Grid spacing",
                         "0",
                         Patterns::Double(),
@@ -52,6 +56,19 @@ namespace viscoslide
                         "20",
                         Patterns::Double(),
                         "See Period.");
+      prm.declare_entry("Refinement",
+                        "3",
+                        Patterns::Integer(),
+                        "Grid = nested: each cell of the band along the "
+                        "contact edge divided into Refinement x Refinement "
+                        "cells (odd, 3 to 15).");
+      prm.declare_entry("Band width",
+                        "1",
+                        Patterns::Double(),
+                        "Grid = nested: how far (in eps) the refined band "
+                        "reaches beyond the cells of the adhesive zone "
+                        "(the attraction above a tenth of its peak) and "
+                        "of the contact's edge.");
       prm.leave_subsection();
     }
 
@@ -64,7 +81,16 @@ namespace viscoslide
       grading_ratio = prm.get_double("Grading ratio");
       period        = prm.get_double("Period");
       wake_periods  = prm.get_double("Wake periods");
+      const long r  = prm.get_integer("Refinement");
+      band_width    = prm.get_double("Band width");
       prm.leave_subsection();
+      require(r >= 3 && r <= 15 && r % 2 == 1,
+              entry("Boundary element", "Refinement", r) +
+                " must be odd, from 3 to 15");
+      refinement = r;
+      require(band_width >= 0 && std::isfinite(band_width),
+              entry("Boundary element", "Band width", band_width) +
+                " must not be negative");
       require(grid_spacing >= 0 && std::isfinite(grid_spacing),
               entry("Boundary element", "Grid spacing", grid_spacing) +
                 " must not be negative");

@@ -11,25 +11,23 @@
 
 namespace viscoslide
 {
+  double
+  love(const double x, const double y, const double h)
+  {
+    const auto r = [](const double a, const double b) {
+      return std::sqrt(a * a + b * b);
+    };
+    const double xp = x + h, xm = x - h, yp = y + h, ym = y - h;
+    const double s = xp * std::log((yp + r(yp, xp)) / (ym + r(ym, xp))) +
+                     yp * std::log((xp + r(yp, xp)) / (xm + r(yp, xm))) +
+                     xm * std::log((ym + r(ym, xm)) / (yp + r(yp, xm))) +
+                     ym * std::log((xm + r(ym, xm)) / (xp + r(ym, xp)));
+    return s / M_PI;
+  }
+
+
   namespace
   {
-    // Love's displacement at (x, y) under a unit traction on the square
-    // |x'|, |y'| <= h on the elastic half-space of unit modulus E*
-    // (Johnson, eq. 3.25).
-    double
-    love(const double x, const double y, const double h)
-    {
-      const auto r = [](const double a, const double b) {
-        return std::sqrt(a * a + b * b);
-      };
-      const double xp = x + h, xm = x - h, yp = y + h, ym = y - h;
-      const double s = xp * std::log((yp + r(yp, xp)) / (ym + r(ym, xp))) +
-                       yp * std::log((xp + r(yp, xp)) / (xm + r(yp, xm))) +
-                       xm * std::log((ym + r(ym, xm)) / (yp + r(yp, xm))) +
-                       ym * std::log((xm + r(ym, xm)) / (xp + r(ym, xp)));
-      return s / M_PI;
-    }
-
     // The smeared traction beyond the window's trailing edge x_b, on the
     // row of cells |y'| <= h/2, is e^{-(x_b - x')/L} for x' < x_b; its
     // displacement at (x_b + X, y) on the half-space of unit modulus is

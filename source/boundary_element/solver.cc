@@ -7,6 +7,7 @@
 
 #include <viscoslide/boundary_element/graded_grid.h>
 #include <viscoslide/boundary_element/isolated_grid.h>
+#include <viscoslide/boundary_element/nested_grid.h>
 #include <viscoslide/boundary_element/periodic_grid.h>
 #include <viscoslide/boundary_element/solver.h>
 
@@ -34,7 +35,11 @@ namespace viscoslide
           return std::make_unique<GradedGrid>(prm, s, m, i, dx, out);
       }
     else if (prm.geometry.substrate == Parameters::Substrate::half_plane)
-      return std::make_unique<IsolatedGrid>(prm, s, m, i, dx, out);
+      {
+        if (prm.boundary_element.grid == Parameters::GridKind::nested)
+          return std::make_unique<NestedGrid>(prm, s, m, i, dx, out);
+        return std::make_unique<IsolatedGrid>(prm, s, m, i, dx, out);
+      }
     return std::make_unique<PeriodicGrid<dim>>(prm, s, m, i, dx, out);
   }
 
@@ -288,11 +293,12 @@ namespace viscoslide
   BoundaryElementSolver<dim>::solve(const bool relax)
   {
     int its = solve_on_grid(relax);
-    if (!grid->follows_contact() || its < 0)
+    if (its < 0)
       return its;
-    // A grid that follows the contact edges: solved again on a grid about
-    // the edges found, until they are where the grid is finest. If that
-    // fails, the state before, on its own grid.
+    // A grid that follows the contact (its edges, or its band of refined
+    // cells): solved again on a grid about the contact found, until it is
+    // where the grid is finest. If that fails, the state before, on its
+    // own grid. A fixed grid follows nothing.
     const auto         old_placement = grid->placement();
     const SurfaceState old_state     = state;
     for (unsigned int k = 0;
@@ -302,7 +308,8 @@ namespace viscoslide
         const int more = solve_on_grid(relax);
         if (more < 0)
           {
-            grid->regrid(*old_placement, state);
+            if (old_placement)
+              grid->regrid(*old_placement, state);
             state = old_state;
             update_quantities();
             return -1;

@@ -10,40 +10,37 @@
 
 namespace viscoslide
 {
-  namespace
+  // The smallest n >= m of the form 2^a 3^b 5^c 7^d, even, for which
+  // FFTW is fastest.
+  unsigned int
+  fft_size(const double m)
   {
-    // The smallest n >= m of the form 2^a 3^b 5^c 7^d, even, for which
-    // FFTW is fastest.
-    unsigned int
-    fft_size(const double m)
-    {
-      for (unsigned int n = std::max(2u, 2 * (unsigned int)(std::ceil(m / 2)));;
-           n += 2)
-        {
-          unsigned int r = n;
-          for (const unsigned int p : {2u, 3u, 5u, 7u})
-            while (r % p == 0)
-              r /= p;
-          if (r == 1)
-            return n;
-        }
-    }
+    for (unsigned int n = std::max(2u, 2 * (unsigned int)(std::ceil(m / 2)));;
+         n += 2)
+      {
+        unsigned int r = n;
+        for (const unsigned int p : {2u, 3u, 5u, 7u})
+          while (r % p == 0)
+            r /= p;
+        if (r == 1)
+          return n;
+      }
+  }
 
-    // The part of a triangle where a linear function of vertex values g
-    // is below c.
-    double
-    fraction_below(std::array<double, 3> g, const double c)
-    {
-      std::sort(g.begin(), g.end());
-      if (c <= g[0])
-        return 0.;
-      if (c >= g[2])
-        return 1.;
-      if (c <= g[1])
-        return (c - g[0]) * (c - g[0]) / ((g[1] - g[0]) * (g[2] - g[0]));
-      return 1. - (g[2] - c) * (g[2] - c) / ((g[2] - g[0]) * (g[2] - g[1]));
-    }
-  } // namespace
+  // The part of a triangle where a linear function of vertex values g
+  // is below c.
+  double
+  fraction_below(std::array<double, 3> g, const double c)
+  {
+    std::sort(g.begin(), g.end());
+    if (c <= g[0])
+      return 0.;
+    if (c >= g[2])
+      return 1.;
+    if (c <= g[1])
+      return (c - g[0]) * (c - g[0]) / ((g[1] - g[0]) * (g[2] - g[0]));
+    return 1. - (g[2] - c) * (g[2] - c) / ((g[2] - g[0]) * (g[2] - g[1]));
+  }
 
 
   template <int dim>

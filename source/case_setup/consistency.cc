@@ -70,6 +70,12 @@ namespace viscoslide
             check_graded_grid(p, h);
             return;
           }
+        require(p.boundary_element.grid != GridKind::nested ||
+                  (p.geometry.dimension == 3 &&
+                   p.geometry.substrate == Substrate::half_plane),
+                "'Boundary element/Grid' = nested is the isolated contact "
+                "on the 3D half-space: set 'Geometry/Dimension' = 3 and "
+                "'Geometry/Substrate' = half-plane");
         const double L = p.boundary_element.period > 0
                            ? p.boundary_element.period
                            : p.geometry.domain_width;

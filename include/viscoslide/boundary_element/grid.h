@@ -19,17 +19,20 @@ namespace viscoslide
     enum class GridKind
     {
       uniform,
-      graded
+      graded,
+      nested
     };
-    VISCOSLIDE_CHOICES(GridKind, "uniform", "graded")
+    VISCOSLIDE_CHOICES(GridKind, "uniform", "graded", "nested")
 
     struct BoundaryElement
     {
-      GridKind grid;
-      double   grid_spacing;  // eps; 0: half the Finest surface cell
-      double   grading_ratio; // of neighbouring cells of the graded grid
-      double   period;        // eps; 0: automatic
-      double   wake_periods;  // the automatic period, in V tau_c
+      GridKind     grid;
+      double       grid_spacing;  // eps; 0: half the Finest surface cell
+      double       grading_ratio; // of neighbouring cells of the graded grid
+      double       period;        // eps; 0: automatic
+      double       wake_periods;  // the automatic period, in V tau_c
+      unsigned int refinement;    // of the nested grid's band cells
+      double       band_width;    // eps, of the nested grid's band
 
       static void
       declare(ParameterHandler &prm);

@@ -34,6 +34,13 @@ namespace viscoslide
 {
   using namespace dealii;
 
+  // Love's displacement at (x, y) under a unit traction on the square
+  // |x'|, |y'| <= a on the elastic half-space of unit modulus E*
+  // (Johnson, Contact Mechanics, eq. 3.25).
+  double
+  love(double x, double y, double a);
+
+
   class IsolatedCompliance : public Compliance
   {
   public:
@@ -59,6 +66,21 @@ namespace viscoslide
     void
     creep_slope(const Vector<double> &q, Vector<double> &slope) const override;
 
+    // u = G * q_eff plus the wakes of the edge values `edge` (per
+    // retardation whose wake reaches beyond the window, per row; empty
+    // where it does not): the elastic step, which the nested grid shares
+    // (nested_compliance.h).
+    void
+    convolve(const std::vector<double>              &q_eff,
+             const std::vector<std::vector<double>> &edge,
+             Vector<double>                         &u) const;
+    // Whether retardation r has a wake beyond the window at this speed.
+    bool
+    has_wake(const unsigned int r) const
+    {
+      return !wake[r].empty();
+    }
+
   private:
     // q_eff of q on the window, and for each retardation whose wake
     // reaches beyond the window its smeared traction at the trailing
@@ -67,12 +89,6 @@ namespace viscoslide
     effective_traction(const Vector<double>             &q,
                        std::vector<double>              &q_eff,
                        std::vector<std::vector<double>> &edge) const;
-
-    // u = G * q_eff plus the wakes of the edge values `edge`.
-    void
-    convolve(const std::vector<double>              &q_eff,
-             const std::vector<std::vector<double>> &edge,
-             Vector<double>                         &u) const;
     // Adds the displacement of the wakes beyond the trailing edge (their
     // edge values times their exponential tails) to the transformed
     // displacement of the convolution.

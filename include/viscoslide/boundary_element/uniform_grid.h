@@ -21,6 +21,17 @@
 
 namespace viscoslide
 {
+  // The smallest n >= m of the form 2^a 3^b 5^c 7^d, even, for which
+  // FFTW is fastest.
+  unsigned int
+  fft_size(double m);
+
+  // The part of a triangle where a linear function of vertex values g is
+  // below c.
+  double
+  fraction_below(std::array<double, 3> g, double c);
+
+
   template <int dim>
   class UniformGrid : public SurfaceGrid<dim>
   {

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The viscoelastic surface compliance of the isolated 3D contact on the
+// nested grid (nested_layout.h): the uniform window of
+// isolated_compliance.h with its band cells divided r x r, the traction
+// constant on each cell, coarse or fine. Two levels, as Brandt and
+// Lubrecht's multilevel multi-integration does it:
+//  * the creep smears the traction along x exactly as on a uniform grid
+//    (creep.h), along each fine row through the band and its coarse
+//    cells, which keep the mean of their r strips;
+//  * the far field is the coarse window's convolution (FFTs) of the
+//    traction carried onto the coarse cells with its first moments kept:
+//    a band cell's mean on itself and its dipoles as +-D/2 on its
+//    neighbours, so that what the far field lacks of a band cell falls
+//    off as its quadrupole, (H/d)^2 times its force;
+//  * within `near` coarse cells of a band cell (Chebyshev distance) the
+//    carried traction's response is taken out again and the exact one of
+//    every cell put in its place, Love's influence of each fine or coarse
+//    square at the point; at a fine point the far field is interpolated
+//    between the coarse points about its cell (Lagrange, 2 `order` + 1
+//    points in each direction), where it is smooth because its nearest
+//    sources are `near` - `order` cells away.
+// The cost of a product is the coarse window's FFTs and a near sum per
+// point of the band, which grows with the band's area, not the window's.
+#ifndef viscoslide_boundary_element_nested_compliance_h
+#define viscoslide_boundary_element_nested_compliance_h
+
+#include <deal.II/lac/vector.h>
+
+#include <viscoslide/boundary_element/compliance.h>
+#include <viscoslide/boundary_element/creep.h>
+#include <viscoslide/boundary_element/isolated_compliance.h>
+#include <viscoslide/boundary_element/nested_layout.h>
+
+#include <memory>
+#include <vector>
+
+namespace viscoslide
+{
+  class NestedCompliance : public Compliance
+  {
+  public:
+    // The near field's reach and the interpolation's order of the grids
+    // (tests/nested_compliance_check.cc measures them), and how far a band
+    // cell must stay from the window's border.
+    static constexpr unsigned int default_near = 4, default_order = 2,
+                                  margin = default_near + default_order + 1;
+
+    NestedCompliance(const ViscoelasticSolid &material,
+                     double                   nu,
+                     const NestedLayout      &layout,
+                     unsigned int             near  = default_near,
+                     unsigned int             order = default_order);
+
+    void
+    set_speed(double V) override;
+    // u = C q on the layout's points.
+    void
+    apply(const Vector<double> &q, Vector<double> &u) const override;
+    // d/dx of the response beyond the relaxed one, by differences between
+    // neighbours along x.
+    void
+    creep_slope(const Vector<double> &q, Vector<double> &slope) const override;
+
+  private:
+    // q_eff of q on the points, and the wakes' edge values per coarse row
+    // (isolated_compliance.h).
+    void
+    effective_traction(const Vector<double>             &q,
+                       std::vector<double>              &q_eff,
+                       std::vector<std::vector<double>> &edge) const;
+    // Smears one fine row s of coarse row `row` for one retardation.
+    double
+    smear_fine_row(const Vector<double> &q,
+                   unsigned int          row,
+                   unsigned int          s,
+                   unsigned int          r,
+                   std::vector<double>  &q_eff) const;
+    // u = C from q_eff and the edge values.
+    void
+    convolve(const std::vector<double>              &q_eff,
+             const std::vector<std::vector<double>> &edge,
+             Vector<double>                         &u) const;
+
+    // A band cell's moments of q_eff: its mean and dipoles (units of H).
+    struct Moments
+    {
+      double mean = 0, dx = 0, dy = 0;
+    };
+    std::vector<Moments>
+    moments(const std::vector<double> &q_eff) const;
+    // The coarse-grid response at coarse cell `at` of what cell `source`
+    // carries onto the coarse grid.
+    double
+    carried(unsigned int                source,
+            unsigned int                at,
+            const std::vector<double>  &q_eff,
+            const std::vector<Moments> &m) const;
+    // The exact response of cell `source` at a point of the fine lattice.
+    double
+    exact(unsigned int               source,
+          int                        x,
+          int                        y,
+          const std::vector<double> &q_eff) const;
+    // Calls f(cell) for the cells within `near` of `cell`.
+    template <typename F>
+    void
+    for_near(unsigned int cell, const F &f) const;
+
+    const NestedLayout &layout;
+    const unsigned int  near, order;
+    const Creep         creep;
+    IsolatedCompliance  coarse;
+    double              V = 0;
+    // Per retardation, its decay over a fine and over a coarse cell.
+    std::vector<CellDecay> fine_decay, coarse_decay;
+    // Love's influence tables: of a coarse cell at coarse offsets, of a
+    // fine and of a coarse cell at fine-lattice offsets (|offset| <=
+    // span, index (dy + span) (2 span + 1) + dx + span).
+    struct Table
+    {
+      int                 span = 0;
+      std::vector<double> value;
+      double
+      operator()(const int x, const int y) const
+      {
+        return value[(y + span) * (2 * span + 1) + x + span];
+      }
+    };
+    Table coarse_at_coarse, fine_at_fine, coarse_at_fine;
+    // The interpolation weights of the far field at fine offset k of a
+    // band cell from its coarse points -order..order.
+    std::vector<std::vector<double>> weight;
+    // The coarse cells within `near` of a band cell.
+    std::vector<unsigned int> near_band;
+  };
+} // namespace viscoslide
+
+#endif

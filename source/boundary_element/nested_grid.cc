@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <viscoslide/boundary_element/nested_grid.h>
+#include <viscoslide/boundary_element/uniform_grid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace viscoslide
+{
+  NestedGrid::NestedGrid(const Parameters::AllParameters &prm,
+                         const Scales                    &scales,
+                         const ViscoelasticSolid         &material,
+                         const Indenter                  &indenter,
+                         const double                     dx,
+                         ConditionalOStream              &out)
+    : SurfaceGrid<3>(dx)
+    , prm(prm)
+    , scales(scales)
+    , material(material)
+    , indenter(indenter)
+    , out(out)
+  {
+  }
+
+
+  NestedGrid::~NestedGrid() = default;
+
+
+  void
+  NestedGrid::set_speed(const double V)
+  {
+    speed = V;
+    compliance->set_speed(V);
+    nested_preconditioner->set_speed(V);
+  }
+
+
+  // The window of the isolated grid: Domain width along x, Domain length
+  // across, counts a multiple of 16 for the multigrid's levels.
+  void
+  NestedGrid::fit_to_speed(const double, SurfaceState &state)
+  {
+    if (size() > 0)
+      return;
+    shape[1] = 16 * fft_size(prm.geometry.domain_width * scales.eps / dx / 16);
+    shape[0] = 16 * fft_size(prm.geometry.length() * scales.eps / dx / 16);
+    make(std::vector<bool>(shape[0] * shape[1], false), state);
+  }
+
+
+  void
+  NestedGrid::make(const std::vector<bool> &band, SurfaceState &state)
+  {
+    std::unique_ptr<NestedLayout> old = std::move(layout);
+    layout                            = std::make_unique<NestedLayout>(shape,
+                                            dx,
+                                            prm.boundary_element.refinement,
+                                            band);
+    compliance            = std::make_unique<NestedCompliance>(material,
+                                                    prm.material.poisson_ratio,
+                                                    *layout);
+    nested_preconditioner = std::make_unique<NestedPreconditioner>(
+      *layout,
+      std::make_unique<SurfaceMultigrid<3>>(Parameters::Substrate::half_plane,
+                                            0.,
+                                            material,
+                                            prm.material.poisson_ratio,
+                                            shape,
+                                            dx,
+                                            scales.sigma_max));
+    set_speed(speed);
+    const unsigned int n = layout->size();
+    const double       h = layout->h, stretch = prm.geometry.elongation;
+    Points            &p = points;
+    p                    = Points();
+    Vector<double> u(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const int lx = layout->lattice_x(j), ly = layout->lattice_y(j);
+        p.x.push_back(lx * h);
+        p.y.push_back(ly * h);
+        p.area.push_back(layout->area(j));
+        // The body of revolution, stretched across the track.
+        const double r = std::hypot(p.x[j], p.y[j] / std::sqrt(stretch));
+        p.h.push_back(indenter.profile(r));
+        p.slope.push_back(r > 0 ? indenter.slope(r) * p.x[j] / r : 0.);
+        if (old)
+          u[j] = value_at(*old, state.u, lx, ly);
+      }
+    state.u = u;
+    ++n_generation;
+    std::ostringstream s;
+    s << "Boundary-element grid: " << n << " points, " << shape[1] << " x "
+      << shape[0] << " cells of " << dx / scales.eps << " eps, "
+      << std::count(band.begin(), band.end(), true) << " of them divided "
+      << layout->r << " x " << layout->r;
+    out << s.str() << std::endl;
+  }
+
+
+  double
+  NestedGrid::value_at(const NestedLayout   &old,
+                       const Vector<double> &u,
+                       const int             x,
+                       const int             y) const
+  {
+    const int r = old.r, n_x = old.n[1], n_y = old.n[0];
+    // The cell holding the point, and the point's place in it.
+    const auto cell_of = [&](const int lattice, const int n) {
+      return std::clamp((lattice + (n / 2) * r + r / 2) / r, 0, n - 1);
+    };
+    const int ix = cell_of(x, n_x), iy = cell_of(y, n_y);
+    if (old.band[iy * n_x + ix])
+      {
+        const int k = x - (ix - n_x / 2) * r + r / 2,
+                  s = y - (iy - n_y / 2) * r + r / 2;
+        return u[old.fine(iy * n_x + ix, s, k)];
+      }
+    // Bilinear between the centres of the four cells about the point.
+    const double fx = double(x) / r + n_x / 2, fy = double(y) / r + n_y / 2;
+    const int    x0 = std::clamp(int(std::floor(fx)), 0, n_x - 2),
+              y0    = std::clamp(int(std::floor(fy)), 0, n_y - 2);
+    const double a  = std::clamp(fx - x0, 0., 1.),
+                 b  = std::clamp(fy - y0, 0., 1.);
+    const auto at   = [&](const int i, const int j) {
+      return u[old.centre(j * n_x + i)];
+    };
+    return (1 - a) * (1 - b) * at(x0, y0) + a * (1 - b) * at(x0 + 1, y0) +
+           (1 - a) * b * at(x0, y0 + 1) + a * b * at(x0 + 1, y0 + 1);
+  }
+
+
+  std::vector<bool>
+  NestedGrid::band_for(const Vector<double> &traction) const
+  {
+    const NestedLayout &l   = *layout;
+    const int           n_x = shape[1], n_y = shape[0];
+    // Each cell's mean traction.
+    std::vector<double> mean(l.n_cells(), 0.);
+    for (unsigned int j = 0; j < l.size(); ++j)
+      mean[l.cell_of[j]] += traction[j] * l.area(j) / (dx * dx);
+    const double      peak = *std::max_element(mean.begin(), mean.end());
+    std::vector<bool> core(l.n_cells(), false);
+    for (int iy = 0; iy + 1 < n_y; ++iy)
+      for (int ix = 0; ix + 1 < n_x; ++ix)
+        {
+          const int  c    = iy * n_x + ix;
+          const bool pull = mean[c] > 0;
+          if (peak > 0 && mean[c] > 0.1 * peak)
+            core[c] = true;
+          for (const int d : {1, n_x})
+            if ((mean[c + d] > 0) != pull)
+              core[c] = core[c + d] = true;
+        }
+    // Widened by the band width.
+    const int w =
+      int(std::ceil(prm.boundary_element.band_width * scales.eps / dx - 1e-9));
+    // No band cell within the compliance's margin of the window's border
+    // (nested_compliance.h): no traction reaches there.
+    const int         m = NestedCompliance::margin;
+    std::vector<bool> band(core.size(), false);
+    for (int iy = 0; iy < n_y; ++iy)
+      for (int ix = 0; ix < n_x; ++ix)
+        if (core[iy * n_x + ix])
+          for (int y = std::max(iy - w, m); y <= std::min(iy + w, n_y - 1 - m);
+               ++y)
+            for (int x = std::max(ix - w, m);
+                 x <= std::min(ix + w, n_x - 1 - m);
+                 ++x)
+              band[y * n_x + x] = true;
+    return band;
+  }
+
+
+  bool
+  NestedGrid::follow(const SurfaceQuantities &,
+                     const Vector<double> &traction,
+                     const bool            always,
+                     SurfaceState         &state)
+  {
+    // Kept while the band asked for lies within the refined cells.
+    const std::vector<bool> wanted = band_for(traction);
+    bool                    inside = true;
+    for (unsigned int c = 0; c < wanted.size() && inside; ++c)
+      inside = !wanted[c] || layout->band[c];
+    if ((inside && !always) || wanted == layout->band)
+      return false;
+    make(wanted, state);
+    return true;
+  }
+
+
+  std::shared_ptr<const SurfaceGrid<3>::Placement>
+  NestedGrid::placement() const
+  {
+    auto p   = std::make_shared<Band>();
+    p->flags = layout->band;
+    return p;
+  }
+
+
+  void
+  NestedGrid::regrid(const Placement &p, SurfaceState &state)
+  {
+    make(dynamic_cast<const Band &>(p).flags, state);
+  }
+
+
+  double
+  NestedGrid::distance_to_next(const unsigned int j) const
+  {
+    const unsigned int k = next(j);
+    return k == j ? layout->h
+                  : (layout->lattice_x(k) - layout->lattice_x(j)) * layout->h;
+  }
+
+
+  double
+  NestedGrid::distance_across(const unsigned int j) const
+  {
+    return (layout->lattice_x(next(j)) - layout->lattice_x(previous(j))) *
+           layout->h;
+  }
+
+
+  // The contact's area: each point's square of side sqrt(area), the gap
+  // linear over it with the slopes between its neighbours, split into two
+  // triangles (exact for a linear gap); the half-width across the track
+  // from the crossings between neighbours along y.
+  void
+  NestedGrid::measure_plane(const Vector<double> &gaps,
+                            const double          gc,
+                            SurfaceQuantities    &q) const
+  {
+    const NestedLayout &l    = *layout;
+    double              area = 0;
+    for (unsigned int j = 0; j < l.size(); ++j)
+      {
+        const double a = std::sqrt(l.area(j));
+        double       slope[2];
+        for (unsigned int axis = 0; axis < 2; ++axis)
+          {
+            const unsigned int f = l.neighbour(j, axis, true),
+                               b = l.neighbour(j, axis, false);
+            const auto lattice   = [&](const unsigned int i) {
+              return axis == 0 ? l.lattice_x(i) : l.lattice_y(i);
+            };
+            slope[axis] =
+              f == b ? 0.
+                     : (gaps[f] - gaps[b]) / ((lattice(f) - lattice(b)) * l.h);
+          }
+        const double gx = 0.5 * a * slope[0], gy = 0.5 * a * slope[1],
+                     g = gaps[j];
+        area += 0.5 * a * a *
+                (fraction_below({{g - gx - gy, g + gx - gy, g + gx + gy}}, gc) +
+                 fraction_below({{g - gx - gy, g - gx + gy, g + gx + gy}}, gc));
+        const unsigned int up = l.neighbour(j, 1, true);
+        if (up != j && (gaps[j] < gc) != (gaps[up] < gc))
+          q.y_half = std::max(q.y_half,
+                              std::abs(points.y[j] +
+                                       (gc - gaps[j]) / (gaps[up] - gaps[j]) *
+                                         (points.y[up] - points.y[j])));
+      }
+    q.contact_length = area;
+  }
+} // namespace viscoslide

@@ -36,8 +36,11 @@ namespace
 int
 main(int argc, char **argv)
 {
-  const unsigned int                near  = argc > 1 ? std::atoi(argv[1]) : 4;
-  const unsigned int                order = argc > 2 ? std::atoi(argv[2]) : 1;
+  // The grid's near field and interpolation, or others to measure them.
+  const unsigned int near =
+    argc > 1 ? std::atoi(argv[1]) : NestedCompliance::default_near;
+  const unsigned int order =
+    argc > 2 ? std::atoi(argv[2]) : NestedCompliance::default_order;
   const ViscoelasticSolid           material(1. - 0.49 * 0.49,
                                    (1. - 0.49 * 0.49) / 0.1,
                                    0.49,

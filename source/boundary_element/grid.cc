@@ -63,11 +63,11 @@ namespace viscoslide
                         "contact edge divided into Refinement x Refinement "
                         "cells (odd, 3 to 15).");
       prm.declare_entry("Band width",
-                        "1",
+                        "0.5",
                         Patterns::Double(),
                         "Grid = nested: how far (in eps) the refined band "
                         "reaches beyond the cells of the adhesive zone "
-                        "(the attraction above a tenth of its peak) and "
+                        "(the attraction above half its peak) and "
                         "of the contact's edge.");
       prm.leave_subsection();
     }

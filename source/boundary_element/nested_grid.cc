@@ -147,7 +147,7 @@ namespace viscoslide
         {
           const int  c    = iy * n_x + ix;
           const bool pull = mean[c] > 0;
-          if (peak > 0 && mean[c] > 0.1 * peak)
+          if (peak > 0 && mean[c] > 0.5 * peak)
             core[c] = true;
           for (const int d : {1, n_x})
             if ((mean[c + d] > 0) != pull)

@@ -5,7 +5,7 @@
 // adhesive zone, a ring a fraction of an eps wide at slow speeds, is
 // resolved where it is and the window elsewhere keeps its coarse cells.
 // The band is what the converged state asks for: the cells where the
-// attraction exceeds a tenth of its peak or the traction changes sign
+// attraction exceeds half its peak or the traction changes sign
 // (the contact's edge), widened by Band width; after each converged state
 // whose band has left the refined cells a new grid is made about it and
 // the state solved again (solver.h, solve), so that the band moves with

@@ -8,19 +8,25 @@ namespace viscoslide
 {
   namespace
   {
-    // Love's influence of a square of side `side` at the points (x, y)
-    // dx of the lattice, |x|, |y| <= span.
-    template <typename Table>
-    Table
-    love_table(const int span, const double dx, const double side)
+    // Love's influence of a square of side `side` at the points (x, y) dx
+    // of a lattice, |x|, |y| <= span.
+    struct LoveTable
     {
-      Table t;
-      t.span = span;
-      for (int y = -span; y <= span; ++y)
-        for (int x = -span; x <= span; ++x)
-          t.value.push_back(love(x * dx, y * dx, side / 2));
-      return t;
-    }
+      LoveTable(const int span, const double dx, const double side)
+        : span(span)
+      {
+        for (int y = -span; y <= span; ++y)
+          for (int x = -span; x <= span; ++x)
+            value.push_back(love(x * dx, y * dx, side / 2));
+      }
+      double
+      operator()(const int x, const int y) const
+      {
+        return value[(y + span) * (2 * span + 1) + x + span];
+      }
+      int                 span;
+      std::vector<double> value;
+    };
   } // namespace
 
 
@@ -37,28 +43,12 @@ namespace viscoslide
     , fine_decay(creep.retardations.size())
     , coarse_decay(creep.retardations.size())
   {
-    const int    r = layout.r;
-    const double H = layout.H, h = layout.h;
-    coarse_at_coarse = love_table<Table>(near + order + 1, H, H);
-    fine_at_fine     = love_table<Table>((near + 1) * r, h, h);
-    coarse_at_fine   = love_table<Table>((near + 1) * r, h, H);
-    // Lagrange's weights on the nodes -order..order at (k - c)/r.
-    const int p = order;
-    for (int k = 0; k < r; ++k)
-      {
-        const double        xi = double(k - int(layout.c)) / r;
-        std::vector<double> w(2 * p + 1, 1.);
-        for (int a = -p; a <= p; ++a)
-          for (int b = -p; b <= p; ++b)
-            if (b != a)
-              w[a + p] *= (xi - b) / double(a - b);
-        weight.push_back(w);
-      }
+    make_near_field();
     // The cells within `near` of a band cell; no band cell so close to
     // the window's border that its near cells or interpolation points
     // would leave it.
     const unsigned int n_x = layout.n[1], n_y = layout.n[0];
-    near_band.assign(layout.n_cells(), 0);
+    near_band.assign(layout.n_cells(), false);
     const unsigned int margin = near + order + 1;
     for (unsigned int cell = 0; cell < layout.n_cells(); ++cell)
       if (layout.band[cell])
@@ -69,7 +59,9 @@ namespace viscoslide
             throw std::logic_error("a band cell of the nested grid lies "
                                    "within its margin of the window's "
                                    "border");
-          for_near(cell, [&](const unsigned int j) { near_band[j] = 1; });
+          for_near(cell, [&](const unsigned int j, unsigned int) {
+            near_band[j] = true;
+          });
         }
   }
 
@@ -82,7 +74,7 @@ namespace viscoslide
     const int ix = cell % n_x, iy = cell / n_x;
     for (int y = std::max(iy - m, 0); y <= std::min(iy + m, n_y - 1); ++y)
       for (int x = std::max(ix - m, 0); x <= std::min(ix + m, n_x - 1); ++x)
-        f(y * n_x + x);
+        f(y * n_x + x, (y - iy + m) * (2 * m + 1) + x - ix + m);
   }
 
 
@@ -194,45 +186,6 @@ namespace viscoslide
   }
 
 
-  double
-  NestedCompliance::carried(const unsigned int          source,
-                            const unsigned int          at,
-                            const std::vector<double>  &q_eff,
-                            const std::vector<Moments> &m) const
-  {
-    const int n_x  = layout.n[1];
-    const int x    = int(at % n_x) - int(source % n_x),
-              y    = int(at / n_x) - int(source / n_x);
-    const Table &K = coarse_at_coarse;
-    if (!layout.band[source])
-      return K(x, y) * q_eff[layout.first[source]];
-    const Moments &s = m[source];
-    return s.mean * K(x, y) + 0.5 * s.dx * (K(x - 1, y) - K(x + 1, y)) +
-           0.5 * s.dy * (K(x, y - 1) - K(x, y + 1));
-  }
-
-
-  double
-  NestedCompliance::exact(const unsigned int         source,
-                          const int                  x,
-                          const int                  y,
-                          const std::vector<double> &q_eff) const
-  {
-    const NestedLayout &l      = layout;
-    const unsigned int  centre = l.centre(source);
-    const int dx = x - l.lattice_x(centre), dy = y - l.lattice_y(centre);
-    if (!l.band[source])
-      return coarse_at_fine(dx, dy) * q_eff[l.first[source]];
-    double        sum = 0;
-    const int     c   = l.c;
-    const double *v   = q_eff.data() + l.first[source];
-    for (int s = 0; s < int(l.r); ++s)
-      for (int k = 0; k < int(l.r); ++k)
-        sum += fine_at_fine(dx - (k - c), dy - (s - c)) * *v++;
-    return sum;
-  }
-
-
   void
   NestedCompliance::convolve(const std::vector<double>              &q_eff,
                              const std::vector<std::vector<double>> &edge,
@@ -258,49 +211,145 @@ namespace viscoslide
     coarse.convolve(carried_traction, edge, U);
 
     u.reinit(l.size());
-    const int p = order;
+    const unsigned int nf = l.r * l.r, nD = (2 * near + 1) * (2 * near + 1),
+                       nP = (2 * order + 1) * (2 * order + 1);
+    const int p           = order;
     for (unsigned int cell = 0; cell < l.n_cells(); ++cell)
       {
-        const unsigned int centre = l.centre(cell);
-        const int          x = l.lattice_x(centre), y = l.lattice_y(centre);
         if (!l.band[cell])
           {
             double v = U[cell];
             if (near_band[cell])
-              for_near(cell, [&](const unsigned int j) {
+              for_near(cell, [&](const unsigned int j, const unsigned int D) {
                 if (l.band[j])
-                  v += exact(j, x, y, q_eff) - carried(j, cell, q_eff, m);
+                  {
+                    const double *a = &coarse_from_band[D * nf];
+                    const double *q = &q_eff[l.first[j]];
+                    for (unsigned int f = 0; f < nf; ++f)
+                      v += a[f] * q[f];
+                  }
               });
             u[l.first[cell]] = v;
             continue;
           }
-        // The far field at the coarse points about the cell.
-        std::vector<double> far((2 * p + 1) * (2 * p + 1));
+        double *const u_cell = &u[l.first[cell]];
+        // The far field, interpolated from the coarse points about the
+        // cell.
+        for (unsigned int t = 0; t < nf; ++t)
+          {
+            double        v = 0;
+            const double *w = &interpolation[t * nP];
+            for (int a = -p; a <= p; ++a)
+              for (int b = -p; b <= p; ++b)
+                v += *w++ * U[cell + a * int(n_x) + b];
+            u_cell[t] = v;
+          }
+        for_near(cell, [&](const unsigned int j, const unsigned int D) {
+          const double *q = &q_eff[l.first[j]];
+          if (l.band[j])
+            for (unsigned int t = 0; t < nf; ++t)
+              {
+                const double *a = &fine_from_band[(t * nD + D) * nf];
+                double        v = 0;
+                for (unsigned int f = 0; f < nf; ++f)
+                  v += a[f] * q[f];
+                u_cell[t] += v;
+              }
+          else
+            for (unsigned int t = 0; t < nf; ++t)
+              u_cell[t] += fine_from_coarse[t * nD + D] * q[0];
+        });
+      }
+  }
+
+
+  void
+  NestedCompliance::make_near_field()
+  {
+    const int    r = layout.r, c = layout.c, m = near, p = order;
+    const double H = layout.H, h = layout.h;
+    const int    nf = r * r, nD = (2 * m + 1) * (2 * m + 1),
+              nP = (2 * p + 1) * (2 * p + 1);
+    const LoveTable coarse_at_coarse(m + p + 1, H, H),
+      fine_at_fine((m + 1) * r, h, h), coarse_at_fine((m + 1) * r, h, H);
+    // Lagrange's weights on the nodes -p..p at (k - c)/r.
+    std::vector<std::vector<double>> lagrange;
+    for (int k = 0; k < r; ++k)
+      {
+        const double        xi = double(k - c) / r;
+        std::vector<double> w(2 * p + 1, 1.);
         for (int a = -p; a <= p; ++a)
           for (int b = -p; b <= p; ++b)
+            if (b != a)
+              w[a + p] *= (xi - b) / double(a - b);
+        lagrange.push_back(w);
+      }
+    // What the coarse grid carried of a source cell at offset (X, Y) from
+    // a coarse point: its mean's response, and its dipoles' per unit
+    // moment.
+    struct Carried
+    {
+      double mean, x, y;
+    };
+    const LoveTable &K       = coarse_at_coarse;
+    const auto       carried = [&](const int X, const int Y) {
+      return Carried{K(X, Y),
+                     0.5 * (K(X - 1, Y) - K(X + 1, Y)),
+                     0.5 * (K(X, Y - 1) - K(X, Y + 1))};
+    };
+    interpolation.assign(nf * nP, 0.);
+    fine_from_band.assign(nf * nD * nf, 0.);
+    fine_from_coarse.assign(nf * nD, 0.);
+    coarse_from_band.assign(nD * nf, 0.);
+    for (int t = 0; t < nf; ++t)
+      for (int a = -p; a <= p; ++a)
+        for (int b = -p; b <= p; ++b)
+          interpolation[t * nP + (a + p) * (2 * p + 1) + b + p] =
+            lagrange[t / r][a + p] * lagrange[t % r][b + p];
+    for (int Dy = -m; Dy <= m; ++Dy)
+      for (int Dx = -m; Dx <= m; ++Dx)
+        {
+          const int D = (Dy + m) * (2 * m + 1) + Dx + m;
+          // At a coarse point: the source's fine cells exactly, less
+          // what was carried (P the point itself, at offset -D).
+          const Carried at_centre = carried(-Dx, -Dy);
+          for (int f = 0; f < nf; ++f)
             {
-              const unsigned int at = cell + a * int(n_x) + b;
-              double             v  = U[at];
-              for_near(cell, [&](const unsigned int j) {
-                v -= carried(j, at, q_eff, m);
-              });
-              far[(a + p) * (2 * p + 1) + b + p] = v;
+              const int    sf = f / r - c, kf = f % r - c;
+              const double xi = double(kf) / r, eta = double(sf) / r;
+              coarse_from_band[D * nf + f] =
+                fine_at_fine(Dx * r + kf, Dy * r + sf) -
+                (at_centre.mean + xi * at_centre.x + eta * at_centre.y) / nf;
             }
-        for (unsigned int s = 0; s < l.r; ++s)
-          for (unsigned int k = 0; k < l.r; ++k)
+          for (int t = 0; t < nf; ++t)
             {
-              double v = 0;
+              const int st = t / r - c, kt = t % r - c;
+              // What was carried, interpolated to t.
+              Carried interpolated{0, 0, 0};
               for (int a = -p; a <= p; ++a)
                 for (int b = -p; b <= p; ++b)
-                  v += weight[s][a + p] * weight[k][b + p] *
-                       far[(a + p) * (2 * p + 1) + b + p];
-              const int xf = x + int(k) - int(l.c), yf = y + int(s) - int(l.c);
-              for_near(cell, [&](const unsigned int j) {
-                v += exact(j, xf, yf, q_eff);
-              });
-              u[l.fine(cell, s, k)] = v;
+                  {
+                    const double w =
+                      interpolation[t * nP + (a + p) * (2 * p + 1) + b + p];
+                    const Carried k = carried(b - Dx, a - Dy);
+                    interpolated.mean += w * k.mean;
+                    interpolated.x += w * k.x;
+                    interpolated.y += w * k.y;
+                  }
+              fine_from_coarse[t * nD + D] =
+                coarse_at_fine(Dx * r - kt, Dy * r - st) - interpolated.mean;
+              for (int f = 0; f < nf; ++f)
+                {
+                  const int    sf = f / r - c, kf = f % r - c;
+                  const double xi = double(kf) / r, eta = double(sf) / r;
+                  fine_from_band[(t * nD + D) * nf + f] =
+                    fine_at_fine(Dx * r + kf - kt, Dy * r + sf - st) -
+                    (interpolated.mean + xi * interpolated.x +
+                     eta * interpolated.y) /
+                      nf;
+                }
             }
-      }
+        }
   }
 
 

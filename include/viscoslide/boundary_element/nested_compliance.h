@@ -81,27 +81,19 @@ namespace viscoslide
              const std::vector<std::vector<double>> &edge,
              Vector<double>                         &u) const;
 
-    // A band cell's moments of q_eff: its mean and dipoles (units of H).
+    // A band cell's moments of q_eff: its mean and dipoles (units of H),
+    // which the coarse grid carries.
     struct Moments
     {
       double mean = 0, dx = 0, dy = 0;
     };
     std::vector<Moments>
     moments(const std::vector<double> &q_eff) const;
-    // The coarse-grid response at coarse cell `at` of what cell `source`
-    // carries onto the coarse grid.
-    double
-    carried(unsigned int                source,
-            unsigned int                at,
-            const std::vector<double>  &q_eff,
-            const std::vector<Moments> &m) const;
-    // The exact response of cell `source` at a point of the fine lattice.
-    double
-    exact(unsigned int               source,
-          int                        x,
-          int                        y,
-          const std::vector<double> &q_eff) const;
-    // Calls f(cell) for the cells within `near` of `cell`.
+    // The near field's coefficients (below), from Love's influences.
+    void
+    make_near_field();
+    // Calls f(cell, D) for the cells within `near` of `cell`, D the
+    // index of their offset.
     template <typename F>
     void
     for_near(unsigned int cell, const F &f) const;
@@ -113,25 +105,20 @@ namespace viscoslide
     double              V = 0;
     // Per retardation, its decay over a fine and over a coarse cell.
     std::vector<CellDecay> fine_decay, coarse_decay;
-    // Love's influence tables: of a coarse cell at coarse offsets, of a
-    // fine and of a coarse cell at fine-lattice offsets (|offset| <=
-    // span, index (dy + span) (2 span + 1) + dx + span).
-    struct Table
-    {
-      int                 span = 0;
-      std::vector<double> value;
-      double
-      operator()(const int x, const int y) const
-      {
-        return value[(y + span) * (2 * span + 1) + x + span];
-      }
-    };
-    Table coarse_at_coarse, fine_at_fine, coarse_at_fine;
-    // The interpolation weights of the far field at fine offset k of a
-    // band cell from its coarse points -order..order.
-    std::vector<std::vector<double>> weight;
-    // The coarse cells within `near` of a band cell.
-    std::vector<unsigned int> near_band;
+    // The near field of a point depends on offsets only: the same
+    // coefficients for every cell, built once (make_near_field). With D
+    // the offset of a source cell from the point's cell, n_D = (2 near +
+    // 1)^2 of them (index (D_y + near)(2 near + 1) + D_x + near), t a fine
+    // point of the point's cell, f one of the source's (n_f = r^2 each):
+    //   u_t = sum_P interpolation[t][P] U_P
+    //         + sum_D (band: sum_f fine_from_band[(t n_D + D) n_f + f] v_f;
+    //                  coarse: fine_from_coarse[t n_D + D] v),
+    //   u_coarse = U + sum_D (band: sum_f coarse_from_band[D n_f + f] v_f),
+    // each the exact influence less what the coarse grid carried.
+    std::vector<double> interpolation, fine_from_band, fine_from_coarse,
+      coarse_from_band;
+    // Whether a coarse cell lies within `near` of a band cell.
+    std::vector<bool> near_band;
   };
 } // namespace viscoslide
 

@@ -20,6 +20,7 @@ namespace viscoslide
     , material(material)
     , indenter(indenter)
     , out(out)
+    , refining(!(prm.sliding.speed > 0))
   {
   }
 
@@ -37,10 +38,14 @@ namespace viscoslide
 
 
   // The window of the isolated grid: Domain width along x, Domain length
-  // across, counts a multiple of 16 for the multigrid's levels.
+  // across, counts a multiple of 16 for the multigrid's levels. Before
+  // sliding, the quasi-static approach runs on the coarse cells alone
+  // (its contact has no creep to resolve, and its steps would each remake
+  // the band); the band follows from the first speed on.
   void
-  NestedGrid::fit_to_speed(const double, SurfaceState &state)
+  NestedGrid::fit_to_speed(const double V_hat, SurfaceState &state)
   {
+    refining = refining || V_hat > 0;
     if (size() > 0)
       return;
     shape[1] = 16 * fft_size(prm.geometry.domain_width * scales.eps / dx / 16);
@@ -132,7 +137,8 @@ namespace viscoslide
 
 
   std::vector<bool>
-  NestedGrid::band_for(const Vector<double> &traction) const
+  NestedGrid::band_for(const Vector<double> &traction,
+                       const int             spare) const
   {
     const NestedLayout &l   = *layout;
     const int           n_x = shape[1], n_y = shape[0];
@@ -155,7 +161,8 @@ namespace viscoslide
         }
     // Widened by the band width.
     const int w =
-      int(std::ceil(prm.boundary_element.band_width * scales.eps / dx - 1e-9));
+      int(std::ceil(prm.boundary_element.band_width * scales.eps / dx - 1e-9)) +
+      spare;
     // No band cell within the compliance's margin of the window's border
     // (nested_compliance.h): no traction reaches there.
     const int         m = NestedCompliance::margin;
@@ -179,14 +186,19 @@ namespace viscoslide
                      const bool            always,
                      SurfaceState         &state)
   {
-    // Kept while the band asked for lies within the refined cells.
-    const std::vector<bool> wanted = band_for(traction);
+    if (!refining)
+      return false;
+    // Kept while the band asked for lies within the refined cells; a new
+    // one has a cell to spare on every side, so that a band that moves by
+    // a cell between two solutions does not remake the grid each time.
+    const std::vector<bool> wanted = band_for(traction, 0);
     bool                    inside = true;
     for (unsigned int c = 0; c < wanted.size() && inside; ++c)
       inside = !wanted[c] || layout->band[c];
-    if ((inside && !always) || wanted == layout->band)
+    const std::vector<bool> spared = band_for(traction, 1);
+    if ((inside && !always) || spared == layout->band)
       return false;
-    make(wanted, state);
+    make(spared, state);
     return true;
   }
 

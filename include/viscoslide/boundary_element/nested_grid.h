@@ -59,7 +59,8 @@ namespace viscoslide
     {
       return shape[0];
     }
-    // The window (no band) at the first call.
+    // The window (no band) at the first call; the band from the first
+    // speed on.
     void
     fit_to_speed(double V_hat, SurfaceState &state) override;
     bool
@@ -81,9 +82,10 @@ namespace viscoslide
     // The grid with band `band`, the state carried over.
     void
     make(const std::vector<bool> &band, SurfaceState &state);
-    // The cells the traction asks to be refined.
+    // The cells the traction asks to be refined, widened by `spare`
+    // cells beyond the band width.
     std::vector<bool>
-    band_for(const Vector<double> &traction) const;
+    band_for(const Vector<double> &traction, int spare) const;
     // The state's displacement at lattice point (x, y) of the grid
     // before: exact on its points, bilinear between its cells' centres.
     double
@@ -120,6 +122,9 @@ namespace viscoslide
     std::unique_ptr<NestedLayout>         layout;
     std::unique_ptr<NestedCompliance>     compliance;
     std::unique_ptr<NestedPreconditioner> nested_preconditioner;
+    // Whether the band follows the contact (from the first speed on, or
+    // from the start where there is no sliding).
+    bool refining;
   };
 } // namespace viscoslide
 

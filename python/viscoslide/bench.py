@@ -13,6 +13,8 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
     scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
                                                steady_curve()
     scripts/bench_sphere [R_hat]               sphere_curve()
+    scripts/bench_nested [grid] [refinement] ["V_hat list"] ["entry=value ..."]
+                                               nested_curve()
     scripts/bench_fem3d [meshes] [solvers] [procs]
                                                fem3d()
     scripts/bench_fem3d_curve [procs] [muT] [linear solver]
@@ -275,6 +277,58 @@ def sphere_curve(argv):
     table = rows(f'{work}/out/steady_state.csv')
     print(f"R_hat {R_hat:g}: {len(table)} speeds, {sum(r['steady'] == '1' for r in table)} steady, "
           f"wall {wall:.1f} s (approach included)")
+    print(f'output in {work}/out')
+
+
+def nested_curve(argv):
+    """The sphere's friction (parameter_files/sphere_friction.prm, muT 3,
+    F_hat 1, R_hat 100) on a boundary-element grid, uniform or nested
+    (default nested, Refinement 5), at the given speeds (default the
+    reference's 0.01 to 1000) against the independent reference curve
+    ../shared/reference/sphere_muT3_F1_R100.csv: per speed mu and its
+    error, A_hat and its error, the run's energy balance (mu_energy against
+    mu); the largest grid, GMRES iterations per Newton step, peak memory and
+    the wall time, approach included, on one process. Further entries as
+    "Section/Entry=value" (e.g. "Loading/Target load=-0.25"; the reference
+    is then not the run's, and only the energy balance counts).
+
+        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list"] ["entry=value ..."]"""
+    prepare()
+    grid = argv[0] if argv else 'nested'
+    refinement = argv[1] if len(argv) > 1 else '5'
+    speeds = argv[2] if len(argv) > 2 else \
+        '0.01, 0.0316228, 0.1, 0.316228, 1, 3.16228, 10, 31.6228, 100, 316.228, 1000'
+    work = tempfile.mkdtemp()
+    changes = {'Output/Output directory': f'{work}/out', 'Boundary element/Grid': grid,
+               'Boundary element/Refinement': refinement, 'Sliding/Sliding speed': speeds}
+    for item in (argv[3].split() if len(argv) > 3 else []):
+        key, value = item.split('=', 1)
+        changes[key] = value
+    path = prm.override_file('parameter_files/sphere_friction.prm',
+                             os.path.join(work, 'run.prm'), changes)
+    log = f'{work}/out.log'
+    code, wall = timed_run([VISCOSLIDE, path], log)
+    text = open(log).read()
+    if code:
+        print('\n'.join(text.splitlines()[-20:]))
+        sys.exit(1)
+    grids = re.findall(r'Boundary-element grid: (\d+) points', text)
+    gmres = re.findall(r'GMRES: .*\(([\d.]+) per Newton step\)', text)
+    with open(f'{work}/out/run.json') as f:
+        peak = json.load(f)['peak_memory_gb']['total']
+    reference = {float(r['V_hat']): r for r in tables.read_reference(
+        os.path.join(ROOT, '..', 'shared', 'reference', 'sphere_muT3_F1_R100.csv'))}
+    print(f'{grid} grid, refinement {refinement}: largest grid {max(map(int, grids))} points, '
+          f'GMRES {gmres[-1] if gmres else "-"} per Newton step, peak memory {peak:.2f} GB, '
+          f'wall {wall:.1f} s (approach included)')
+    print('V_hat      mu        error   A_hat    error   energy balance')
+    for r in rows(f'{work}/out/steady_state.csv'):
+        V, mu, A = float(r['V_hat']), float(r['mu']), float(r['A_hat'])
+        balance = float(r['mu_energy']) / mu - 1
+        ref = next((reference[v] for v in reference if abs(v / V - 1) < 1e-4), None)
+        e_mu = f"{(mu / float(ref['mu']) - 1) * 100:+6.2f} %" if ref else '   -    '
+        e_A = f"{(A / float(ref['A_hat']) - 1) * 100:+6.2f} %" if ref else '   -    '
+        print(f'{V:<10g} {mu:.6f}  {e_mu} {A:8.4f} {e_A}  {balance * 100:+.2f} %')
     print(f'output in {work}/out')
 
 

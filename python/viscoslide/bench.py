@@ -13,7 +13,7 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
     scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
                                                steady_curve()
     scripts/bench_sphere [R_hat]               sphere_curve()
-    scripts/bench_nested [grid] [refinement] ["V_hat list"] ["entry=value ..."]
+    scripts/bench_nested [grid] [refinement] ["V_hat list"] ["entry=value; ..."]
                                                nested_curve()
     scripts/bench_fem3d [meshes] [solvers] [procs]
                                                fem3d()
@@ -285,14 +285,15 @@ def nested_curve(argv):
     F_hat 1, R_hat 100) on a boundary-element grid, uniform or nested
     (default nested, Refinement 5), at the given speeds (default the
     reference's 0.01 to 1000) against the independent reference curve
-    ../shared/reference/sphere_muT3_F1_R100.csv: per speed mu and its
+    ../shared/reference/sphere_muT3_F1_R100.csv (or muT 1's where
+    "Adhesion/Tabor parameter=1" is given): per speed mu and its
     error, A_hat and its error, the run's energy balance (mu_energy against
     mu); the largest grid, GMRES iterations per Newton step, peak memory and
     the wall time, approach included, on one process. Further entries as
-    "Section/Entry=value" (e.g. "Loading/Target load=-0.25"; the reference
+    "Section/Entry=value; ..." (e.g. "Loading/Target load=-0.25"; the reference
     is then not the run's, and only the energy balance counts).
 
-        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list"] ["entry=value ..."]"""
+        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list"] ["entry=value; ..."]"""
     prepare()
     grid = argv[0] if argv else 'nested'
     refinement = argv[1] if len(argv) > 1 else '5'
@@ -301,9 +302,9 @@ def nested_curve(argv):
     work = tempfile.mkdtemp()
     changes = {'Output/Output directory': f'{work}/out', 'Boundary element/Grid': grid,
                'Boundary element/Refinement': refinement, 'Sliding/Sliding speed': speeds}
-    for item in (argv[3].split() if len(argv) > 3 else []):
+    for item in (argv[3].split(';') if len(argv) > 3 else []):
         key, value = item.split('=', 1)
-        changes[key] = value
+        changes[key.strip()] = value.strip()
     path = prm.override_file('parameter_files/sphere_friction.prm',
                              os.path.join(work, 'run.prm'), changes)
     log = f'{work}/out.log'
@@ -316,8 +317,13 @@ def nested_curve(argv):
     gmres = re.findall(r'GMRES: .*\(([\d.]+) per Newton step\)', text)
     with open(f'{work}/out/run.json') as f:
         peak = json.load(f)['peak_memory_gb']['total']
-    reference = {float(r['V_hat']): r for r in tables.read_reference(
-        os.path.join(ROOT, '..', 'shared', 'reference', 'sphere_muT3_F1_R100.csv'))}
+    # The reference at the run's muT, F_hat 1 and R_hat 100, if there is one.
+    muT = changes.get('Adhesion/Tabor parameter', '3')
+    same = all(changes.get(k, v) == v for k, v in
+               (('Loading/Target load', '1'), ('Adhesion/R over eps', '100')))
+    path = os.path.join(ROOT, '..', 'shared', 'reference', f'sphere_muT{muT}_F1_R100.csv')
+    reference = {float(r['V_hat']): r for r in tables.read_reference(path)} \
+        if same and os.path.exists(path) else {}
     print(f'{grid} grid, refinement {refinement}: largest grid {max(map(int, grids))} points, '
           f'GMRES {gmres[-1] if gmres else "-"} per Newton step, peak memory {peak:.2f} GB, '
           f'wall {wall:.1f} s (approach included)')

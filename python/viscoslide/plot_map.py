@@ -8,7 +8,9 @@ positive, the adhesive tension negative), the contact's edge (the gap at
     scripts/plot_map OUT.png MAP.vti [MAP.vti ...]
 
 Several maps go side by side with one colour scale, each titled with the
-V_hat of its header."""
+V_hat of its header. The nested grid's maps (.vtp, its points) are drawn
+on their points, the band of divided cells outlined (grey, dashed): the
+grid over the footprint."""
 import re
 import sys
 
@@ -32,6 +34,35 @@ def read_vti(path):
     return x, y, fields, header.group(1).strip() if header else ''
 
 
+def read_vtp(path):
+    """(x, y, fields, header) of an ASCII VTK poly data file of points as
+    the nested grid writes it: x, y and each field one value per point."""
+    import numpy as np
+    text = open(path).read()
+    fields = {}
+    for name, data in re.findall(r'Name="([^"]+)"[^>]*>\s*([^<]*)</DataArray>', text):
+        fields[name] = np.array(data.split(), dtype=float)
+    points = re.search(r'<Points>\s*<DataArray[^>]*>\s*([^<]*)</DataArray>', text).group(1)
+    xyz = np.array(points.split(), dtype=float).reshape(-1, 3)
+    header = re.search(r'<!--(.*?)-->', text)
+    return xyz[:, 0], xyz[:, 1], fields, header.group(1).strip() if header else ''
+
+
+def draw(ax, x, y, f, norm):
+    """One map on ax: the pressure in colour, the contact edge in black, a
+    nested grid's fine points as dots."""
+    if x.ndim == 1 and 'cell_over_eps' in f:
+        image = ax.tripcolor(x, y, f['p_hat'], cmap='RdBu_r', norm=norm, shading='gouraud')
+        ax.tricontour(x, y, f['gap_over_eps'], levels=[1.2], colors='k', linewidths=1.0)
+        cell = f['cell_over_eps']
+        ax.tricontour(x, y, cell, levels=[0.5 * (cell.min() + cell.max())],
+                      colors='0.35', linewidths=0.6, linestyles='--')
+        return image
+    image = ax.pcolormesh(x, y, f['p_hat'], cmap='RdBu_r', norm=norm, shading='auto')
+    ax.contour(x, y, f['gap_over_eps'], levels=[1.2], colors='k', linewidths=1.0)
+    return image
+
+
 def main(argv):
     if len(argv) < 2:
         sys.exit(__doc__)
@@ -40,15 +71,14 @@ def main(argv):
     import matplotlib.pyplot as plt
     from matplotlib.colors import TwoSlopeNorm
     out, paths = argv[0], argv[1:]
-    maps = [read_vti(p) for p in paths]
+    maps = [read_vtp(p) if p.endswith('.vtp') else read_vti(p) for p in paths]
     low = min(m[2]['p_hat'].min() for m in maps)
     high = max(m[2]['p_hat'].max() for m in maps)
     norm = TwoSlopeNorm(vmin=min(low, -1e-3), vcenter=0., vmax=max(high, 1e-3))
     reach = max(max(abs(m[0]).max(), abs(m[1]).max()) for m in maps)
     fig, axes = plt.subplots(1, len(maps), figsize=(4.2 * len(maps), 4.4), squeeze=False)
     for ax, (x, y, f, header) in zip(axes[0], maps):
-        image = ax.pcolormesh(x, y, f['p_hat'], cmap='RdBu_r', norm=norm, shading='auto')
-        ax.contour(x, y, f['gap_over_eps'], levels=[1.2], colors='k', linewidths=1.0)
+        image = draw(ax, x, y, f, norm)
         V = re.search(r'V_hat = (\S+?),', header)
         v = float(V.group(1)) if V else float('nan')
         ax.set_title(r'$\hat V = %s$' % (f'{v:.3g}' if v < 1e3 else f'{v:.0f}'))

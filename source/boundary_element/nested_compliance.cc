@@ -247,14 +247,17 @@ namespace viscoslide
         for_near(cell, [&](const unsigned int j, const unsigned int D) {
           const double *q = &q_eff[l.first[j]];
           if (l.band[j])
-            for (unsigned int t = 0; t < nf; ++t)
-              {
-                const double *a = &fine_from_band[(t * nD + D) * nf];
-                double        v = 0;
-                for (unsigned int f = 0; f < nf; ++f)
-                  v += a[f] * q[f];
-                u_cell[t] += v;
-              }
+            {
+              // Source by source, an axpy over the cell's points (which
+              // the compiler vectorises, a sum over sources it may not).
+              const double *a = &fine_from_band[D * nf * nf];
+              for (unsigned int f = 0; f < nf; ++f, a += nf)
+                {
+                  const double v = q[f];
+                  for (unsigned int t = 0; t < nf; ++t)
+                    u_cell[t] += a[t] * v;
+                }
+            }
           else
             for (unsigned int t = 0; t < nf; ++t)
               u_cell[t] += fine_from_coarse[t * nD + D] * q[0];
@@ -342,7 +345,7 @@ namespace viscoslide
                 {
                   const int    sf = f / r - c, kf = f % r - c;
                   const double xi = double(kf) / r, eta = double(sf) / r;
-                  fine_from_band[(t * nD + D) * nf + f] =
+                  fine_from_band[(D * nf + f) * nf + t] =
                     fine_at_fine(Dx * r + kf - kt, Dy * r + sf - st) -
                     (interpolated.mean + xi * interpolated.x +
                      eta * interpolated.y) /
@@ -379,7 +382,7 @@ namespace viscoslide
     // the relaxed response left 0.8 % of the dissipation as error. Taken
     // out instead is the elastic response nearest to it, alpha the
     // projection of q_eff on q (weighted by the cells' areas).
-    const NestedLayout &l = layout;
+    const NestedLayout &l  = layout;
     double              qq = 0, qe = 0;
     for (unsigned int j = 0; j < q.size(); ++j)
       {

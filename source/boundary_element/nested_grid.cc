@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 namespace viscoslide
@@ -137,8 +138,7 @@ namespace viscoslide
 
 
   std::vector<bool>
-  NestedGrid::band_for(const Vector<double> &traction,
-                       const int             spare) const
+  NestedGrid::band_for(const Vector<double> &traction, const int spare) const
   {
     const NestedLayout &l   = *layout;
     const int           n_x = shape[1], n_y = shape[0];
@@ -216,6 +216,61 @@ namespace viscoslide
   NestedGrid::regrid(const Placement &p, SurfaceState &state)
   {
     make(dynamic_cast<const Band &>(p).flags, state);
+  }
+
+
+  void
+  NestedGrid::write_map(const std::string    &path,
+                        const std::string    &what,
+                        const Vector<double> &gaps,
+                        const Vector<double> &traction,
+                        const Vector<double> &u,
+                        const double          eps,
+                        const double          sigma_max,
+                        const double          R) const
+  {
+    const Points &p        = points;
+    double        extent_x = 0, extent_y = 0;
+    for (unsigned int j = 0; j < size(); ++j)
+      if (gaps[j] < 10 * eps)
+        {
+          extent_x = std::max(extent_x, std::abs(p.x[j]));
+          extent_y = std::max(extent_y, std::abs(p.y[j]));
+        }
+    std::vector<unsigned int> shown;
+    for (unsigned int j = 0; j < size(); ++j)
+      if (std::abs(p.x[j]) <= 1.25 * extent_x + 4 * dx &&
+          std::abs(p.y[j]) <= 1.25 * extent_y + 4 * dx)
+        shown.push_back(j);
+    std::ofstream out(path.substr(0, path.rfind('.')) + ".vtp");
+    out << "<?xml version=\"1.0\"?>\n<!-- " << what << " -->\n"
+        << "<VTKFile type=\"PolyData\" version=\"0.1\">\n<PolyData>\n"
+        << "<Piece NumberOfPoints=\"" << shown.size() << "\" NumberOfVerts=\""
+        << shown.size() << "\">\n<PointData>\n";
+    const auto field = [&](const char *name, const auto &value) {
+      out << "<DataArray type=\"Float64\" Name=\"" << name
+          << "\" format=\"ascii\">\n";
+      for (const unsigned int j : shown)
+        out << value(j) << "\n";
+      out << "</DataArray>\n";
+    };
+    field("p_hat", [&](unsigned int j) { return -traction[j] / sigma_max; });
+    field("gap_over_eps", [&](unsigned int j) { return gaps[j] / eps; });
+    field("u_over_eps", [&](unsigned int j) { return u[j] / eps; });
+    field("cell_over_eps", [&](unsigned int j) { return std::sqrt(p.area[j]) / eps; });
+    out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
+        << "NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const unsigned int j : shown)
+      out << p.x[j] / R << " " << p.y[j] / R << " 0\n";
+    out << "</DataArray>\n</Points>\n<Verts>\n<DataArray type=\"Int64\" "
+        << "Name=\"connectivity\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < shown.size(); ++i)
+      out << i << "\n";
+    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+        << "format=\"ascii\">\n";
+    for (unsigned int i = 0; i < shown.size(); ++i)
+      out << i + 1 << "\n";
+    out << "</DataArray>\n</Verts>\n</Piece>\n</PolyData>\n</VTKFile>\n";
   }
 
 

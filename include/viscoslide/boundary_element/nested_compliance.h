@@ -111,7 +111,7 @@ namespace viscoslide
     // 1)^2 of them (index (D_y + near)(2 near + 1) + D_x + near), t a fine
     // point of the point's cell, f one of the source's (n_f = r^2 each):
     //   u_t = sum_P interpolation[t][P] U_P
-    //         + sum_D (band: sum_f fine_from_band[(t n_D + D) n_f + f] v_f;
+    //         + sum_D (band: sum_f fine_from_band[(D n_f + f) n_f + t] v_f;
     //                  coarse: fine_from_coarse[t n_D + D] v),
     //   u_coarse = U + sum_D (band: sum_f coarse_from_band[D n_f + f] v_f),
     // each the exact influence less what the coarse grid carried.

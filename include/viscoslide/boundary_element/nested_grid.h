@@ -70,6 +70,19 @@ namespace viscoslide
            SurfaceState            &state) override;
     std::shared_ptr<const Placement>
     placement() const override;
+    // VTK poly data (.vtp in place of the uniform grids' .vti): the points
+    // about the contact, where the surfaces are within 10 eps, with a
+    // margin of a quarter of its size; pressure in sigma_max, gap and
+    // displacement in eps, the cell's side in eps, lengths in R.
+    void
+    write_map(const std::string    &path,
+              const std::string    &what,
+              const Vector<double> &gaps,
+              const Vector<double> &traction,
+              const Vector<double> &u,
+              double                eps,
+              double                sigma_max,
+              double                R) const override;
     void
     regrid(const Placement &p, SurfaceState &state) override;
 

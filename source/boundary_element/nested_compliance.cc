@@ -27,6 +27,25 @@ namespace viscoslide
       int                 span;
       std::vector<double> value;
     };
+
+    // Lagrange's weights on the nodes -p..p at the offsets (k - c)/r of
+    // the r points of a cell (c its middle), k < r.
+    std::vector<std::vector<double>>
+    lagrange_weights(const int r, const int p)
+    {
+      std::vector<std::vector<double>> weights;
+      for (int k = 0; k < r; ++k)
+        {
+          const double        xi = double(k - (r - 1) / 2) / r;
+          std::vector<double> w(2 * p + 1, 1.);
+          for (int a = -p; a <= p; ++a)
+            for (int b = -p; b <= p; ++b)
+              if (b != a)
+                w[a + p] *= (xi - b) / double(a - b);
+          weights.push_back(w);
+        }
+      return weights;
+    }
   } // namespace
 
 
@@ -275,18 +294,7 @@ namespace viscoslide
               nP = (2 * p + 1) * (2 * p + 1);
     const LoveTable coarse_at_coarse(m + p + 1, H, H),
       fine_at_fine((m + 1) * r, h, h), coarse_at_fine((m + 1) * r, h, H);
-    // Lagrange's weights on the nodes -p..p at (k - c)/r.
-    std::vector<std::vector<double>> lagrange;
-    for (int k = 0; k < r; ++k)
-      {
-        const double        xi = double(k - c) / r;
-        std::vector<double> w(2 * p + 1, 1.);
-        for (int a = -p; a <= p; ++a)
-          for (int b = -p; b <= p; ++b)
-            if (b != a)
-              w[a + p] *= (xi - b) / double(a - b);
-        lagrange.push_back(w);
-      }
+    const std::vector<std::vector<double>> lagrange = lagrange_weights(r, p);
     // What the coarse grid carried of a source cell at offset (X, Y) from
     // a coarse point: its mean's response, and its dipoles' per unit
     // moment.

@@ -138,7 +138,7 @@ namespace viscoslide
 
 
   std::vector<bool>
-  NestedGrid::band_for(const Vector<double> &traction, const int spare) const
+  NestedGrid::core_of(const Vector<double> &traction) const
   {
     const NestedLayout &l   = *layout;
     const int           n_x = shape[1], n_y = shape[0];
@@ -159,7 +159,15 @@ namespace viscoslide
             if ((mean[c + d] > 0) != pull)
               core[c] = core[c + d] = true;
         }
-    // Widened by the band width.
+    return core;
+  }
+
+
+  std::vector<bool>
+  NestedGrid::widened(const std::vector<bool> &core, const int spare) const
+  {
+    const int n_x = shape[1], n_y = shape[0];
+    // By the band width and `spare` cells.
     const int w =
       int(std::ceil(prm.boundary_element.band_width * scales.eps / dx - 1e-9)) +
       spare;
@@ -191,12 +199,15 @@ namespace viscoslide
     // Kept while the band asked for lies within the refined cells; a new
     // one has a cell to spare on every side, so that a band that moves by
     // a cell between two solutions does not remake the grid each time.
-    const std::vector<bool> wanted = band_for(traction, 0);
+    const std::vector<bool> core   = core_of(traction);
+    const std::vector<bool> wanted = widened(core, 0);
     bool                    inside = true;
     for (unsigned int c = 0; c < wanted.size() && inside; ++c)
       inside = !wanted[c] || layout->band[c];
-    const std::vector<bool> spared = band_for(traction, 1);
-    if ((inside && !always) || spared == layout->band)
+    if (inside && !always)
+      return false;
+    const std::vector<bool> spared = widened(core, 1);
+    if (spared == layout->band)
       return false;
     make(spared, state);
     return true;
@@ -257,7 +268,8 @@ namespace viscoslide
     field("p_hat", [&](unsigned int j) { return -traction[j] / sigma_max; });
     field("gap_over_eps", [&](unsigned int j) { return gaps[j] / eps; });
     field("u_over_eps", [&](unsigned int j) { return u[j] / eps; });
-    field("cell_over_eps", [&](unsigned int j) { return std::sqrt(p.area[j]) / eps; });
+    field("cell_over_eps",
+          [&](unsigned int j) { return std::sqrt(p.area[j]) / eps; });
     out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
         << "NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (const unsigned int j : shown)

@@ -95,10 +95,12 @@ namespace viscoslide
     // The grid with band `band`, the state carried over.
     void
     make(const std::vector<bool> &band, SurfaceState &state);
-    // The cells the traction asks to be refined, widened by `spare`
-    // cells beyond the band width.
+    // The cells the traction asks to be refined (the zone and the edge),
+    // and those widened by the band width and `spare` cells more.
     std::vector<bool>
-    band_for(const Vector<double> &traction, int spare) const;
+    core_of(const Vector<double> &traction) const;
+    std::vector<bool>
+    widened(const std::vector<bool> &core, int spare) const;
     // The state's displacement at lattice point (x, y) of the grid
     // before: exact on its points, bilinear between its cells' centres.
     double

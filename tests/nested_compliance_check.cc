@@ -57,7 +57,8 @@ main(int argc, char **argv)
           band[j]        = std::abs(std::hypot(x, y) - 6.) < 2 * H;
         }
       const NestedLayout layout(n, H, r, band);
-      NestedCompliance   nested(material, 0.49, layout, near, order);
+      IsolatedCompliance window(material, 0.49, n, H);
+      NestedCompliance   nested(material, 0.49, layout, window, near, order);
       const std::array<unsigned int, 2> nf{{n[0] * r, n[1] * r}};
       IsolatedCompliance                uniform(material, 0.49, nf, layout.h);
 
@@ -96,6 +97,7 @@ main(int argc, char **argv)
           // The creep length of the slowest retardation is V theta; the
           // solid's retardation time is tau Einf/E0 = 10.
           const double V = L / 10.;
+          window.set_speed(V);
           nested.set_speed(V);
           uniform.set_speed(V);
           Vector<double> u, uf, slope, slope_f;

@@ -49,16 +49,17 @@ namespace viscoslide
   } // namespace
 
 
-  NestedCompliance::NestedCompliance(const ViscoelasticSolid &material,
-                                     const double             nu,
-                                     const NestedLayout      &layout,
-                                     const unsigned int       near,
-                                     const unsigned int       order)
+  NestedCompliance::NestedCompliance(const ViscoelasticSolid  &material,
+                                     const double              nu,
+                                     const NestedLayout       &layout,
+                                     const IsolatedCompliance &window,
+                                     const unsigned int        near,
+                                     const unsigned int        order)
     : layout(layout)
     , near(near)
     , order(order)
     , creep(material, nu)
-    , coarse(material, nu, layout.n, layout.H)
+    , coarse(window)
     , fine_decay(creep.retardations.size())
     , coarse_decay(creep.retardations.size())
   {
@@ -101,7 +102,6 @@ namespace viscoslide
   NestedCompliance::set_speed(const double speed)
   {
     V = speed;
-    coarse.set_speed(V);
     for (unsigned int r = 0; r < creep.retardations.size(); ++r)
       {
         const double L  = V * creep.retardations[r].first;

@@ -33,8 +33,9 @@ namespace viscoslide
   NestedGrid::set_speed(const double V)
   {
     speed = V;
+    window->set_speed(V);
+    multigrid->set_speed(V);
     compliance->set_speed(V);
-    nested_preconditioner->set_speed(V);
   }
 
 
@@ -51,6 +52,19 @@ namespace viscoslide
       return;
     shape[1] = 16 * fft_size(prm.geometry.domain_width * scales.eps / dx / 16);
     shape[0] = 16 * fft_size(prm.geometry.length() * scales.eps / dx / 16);
+    // The coarse window's operators, the same for every band.
+    const double nu = prm.material.poisson_ratio;
+    window = std::make_unique<IsolatedCompliance>(material, nu, shape, dx);
+    multigrid =
+      std::make_unique<SurfaceMultigrid<3>>(Parameters::Substrate::half_plane,
+                                            0.,
+                                            material,
+                                            nu,
+                                            shape,
+                                            dx,
+                                            scales.sigma_max);
+    window->set_speed(speed);
+    multigrid->set_speed(speed);
     make(std::vector<bool>(shape[0] * shape[1], false), state);
   }
 
@@ -63,19 +77,13 @@ namespace viscoslide
                                             dx,
                                             prm.boundary_element.refinement,
                                             band);
-    compliance            = std::make_unique<NestedCompliance>(material,
+    compliance = std::make_unique<NestedCompliance>(material,
                                                     prm.material.poisson_ratio,
-                                                    *layout);
-    nested_preconditioner = std::make_unique<NestedPreconditioner>(
-      *layout,
-      std::make_unique<SurfaceMultigrid<3>>(Parameters::Substrate::half_plane,
-                                            0.,
-                                            material,
-                                            prm.material.poisson_ratio,
-                                            shape,
-                                            dx,
-                                            scales.sigma_max));
-    set_speed(speed);
+                                                    *layout,
+                                                    *window);
+    compliance->set_speed(speed);
+    nested_preconditioner =
+      std::make_unique<NestedPreconditioner>(*layout, *multigrid);
     const unsigned int n = layout->size();
     const double       h = layout->h, stretch = prm.geometry.elongation;
     Points            &p = points;

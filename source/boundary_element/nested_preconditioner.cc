@@ -4,11 +4,10 @@
 
 namespace viscoslide
 {
-  NestedPreconditioner::NestedPreconditioner(
-    const NestedLayout                  &layout,
-    std::unique_ptr<SurfaceMultigrid<3>> coarse)
+  NestedPreconditioner::NestedPreconditioner(const NestedLayout  &layout,
+                                             SurfaceMultigrid<3> &coarse)
     : layout(layout)
-    , coarse(std::move(coarse))
+    , coarse(coarse)
   {
   }
 
@@ -34,7 +33,7 @@ namespace viscoslide
                                const double          dashpot,
                                const bool            force)
   {
-    coarse->update(restrict_to_cells(tangent), dashpot, force);
+    coarse.update(restrict_to_cells(tangent), dashpot, force);
     const double c_h = love(0, 0, layout.h / 2);
     inverse_diagonal.reinit(layout.size());
     for (unsigned int j = 0; j < layout.size(); ++j)
@@ -50,7 +49,7 @@ namespace viscoslide
     const unsigned int   n = layout.size(), cells = layout.n_cells();
     const Vector<double> mean = restrict_to_cells(src);
     Vector<double>       correction(mean.size());
-    coarse->vmult(correction, mean);
+    coarse.vmult(correction, mean);
     dst.reinit(src.size());
     for (unsigned int j = 0; j < n; ++j)
       {

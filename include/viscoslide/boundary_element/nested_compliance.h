@@ -45,11 +45,14 @@ namespace viscoslide
     static constexpr unsigned int default_near = 3, default_order = 2,
                                   margin = default_near + default_order + 1;
 
-    NestedCompliance(const ViscoelasticSolid &material,
-                     double                   nu,
-                     const NestedLayout      &layout,
-                     unsigned int             near  = default_near,
-                     unsigned int             order = default_order);
+    // `window` is the compliance of the layout's coarse cells, which its
+    // owner keeps at the speed (set_speed sets only this one's creep).
+    NestedCompliance(const ViscoelasticSolid  &material,
+                     double                    nu,
+                     const NestedLayout       &layout,
+                     const IsolatedCompliance &window,
+                     unsigned int              near  = default_near,
+                     unsigned int              order = default_order);
 
     void
     set_speed(double V) override;
@@ -98,11 +101,11 @@ namespace viscoslide
     void
     for_near(unsigned int cell, const F &f) const;
 
-    const NestedLayout &layout;
-    const unsigned int  near, order;
-    const Creep         creep;
-    IsolatedCompliance  coarse;
-    double              V = 0;
+    const NestedLayout       &layout;
+    const unsigned int        near, order;
+    const Creep               creep;
+    const IsolatedCompliance &coarse;
+    double                    V = 0;
     // Per retardation, its decay over a fine and over a coarse cell.
     std::vector<CellDecay> fine_decay, coarse_decay;
     // The near field of a point depends on offsets only: the same

@@ -128,12 +128,16 @@ namespace viscoslide
                   double                gc,
                   SurfaceQuantities    &q) const override;
 
-    const Parameters::AllParameters      &prm;
-    const Scales                         &scales;
-    const ViscoelasticSolid              &material;
-    const Indenter                       &indenter;
-    ConditionalOStream                   &out;
-    std::array<unsigned int, 2>           shape{};
+    const Parameters::AllParameters &prm;
+    const Scales                    &scales;
+    const ViscoelasticSolid         &material;
+    const Indenter                  &indenter;
+    ConditionalOStream              &out;
+    std::array<unsigned int, 2>      shape{};
+    // The coarse window's compliance and multigrid, made once; the
+    // layout and what depends on the band, made with each band.
+    std::unique_ptr<IsolatedCompliance>   window;
+    std::unique_ptr<SurfaceMultigrid<3>>  multigrid;
     std::unique_ptr<NestedLayout>         layout;
     std::unique_ptr<NestedCompliance>     compliance;
     std::unique_ptr<NestedPreconditioner> nested_preconditioner;

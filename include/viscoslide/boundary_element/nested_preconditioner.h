@@ -12,26 +12,17 @@
 #include <viscoslide/boundary_element/multigrid_preconditioner.h>
 #include <viscoslide/boundary_element/nested_layout.h>
 
-#include <memory>
 
 namespace viscoslide
 {
   class NestedPreconditioner : public NewtonPreconditioner
   {
   public:
-    NestedPreconditioner(const NestedLayout                  &layout,
-                         std::unique_ptr<SurfaceMultigrid<3>> coarse);
+    // `coarse` is the multigrid of the layout's coarse cells, which its
+    // owner keeps at the speed.
+    NestedPreconditioner(const NestedLayout  &layout,
+                         SurfaceMultigrid<3> &coarse);
 
-    void
-    set_speed(double V)
-    {
-      coarse->set_speed(V);
-    }
-    unsigned int
-    n_levels() const
-    {
-      return coarse->n_levels();
-    }
     void
     update(const Vector<double> &tangent, double dashpot, bool force) override;
     void
@@ -42,9 +33,9 @@ namespace viscoslide
     Vector<double>
     restrict_to_cells(const Vector<double> &v) const;
 
-    const NestedLayout                  &layout;
-    std::unique_ptr<SurfaceMultigrid<3>> coarse;
-    Vector<double>                       inverse_diagonal;
+    const NestedLayout  &layout;
+    SurfaceMultigrid<3> &coarse;
+    Vector<double>       inverse_diagonal;
   };
 } // namespace viscoslide
 

@@ -64,6 +64,7 @@ namespace viscoslide
     , coarse_decay(creep.retardations.size())
   {
     make_near_field();
+    make_strips();
     // The cells within `near` of a band cell; no band cell so close to
     // the window's border that its near cells or interpolation points
     // would leave it.
@@ -111,39 +112,49 @@ namespace viscoslide
   }
 
 
-  double
-  NestedCompliance::smear_fine_row(const Vector<double> &q,
-                                   const unsigned int    row,
-                                   const unsigned int    s,
-                                   const unsigned int    r,
-                                   std::vector<double>  &q_eff) const
+  void
+  NestedCompliance::make_strips()
   {
-    const NestedLayout       &l = layout;
-    std::vector<double>       values, smeared;
-    std::vector<unsigned int> index;
-    std::vector<bool>         fine;
-    for (unsigned int ix = 0; ix < l.n[1]; ++ix)
-      {
-        const unsigned int cell = row * l.n[1] + ix;
-        for (unsigned int k = 0; k < (l.band[cell] ? l.r : 1); ++k)
+    const NestedLayout &l = layout;
+    strips.assign(l.n[0] * l.r, {});
+    for (unsigned int row = 0; row < l.n[0]; ++row)
+      if (l.row_has_band[row])
+        for (unsigned int s = 0; s < l.r; ++s)
           {
-            index.push_back(l.band[cell] ? l.fine(cell, s, k) : l.first[cell]);
-            values.push_back(q[index.back()]);
-            fine.push_back(l.band[cell]);
+            Strip &strip = strips[row * l.r + s];
+            for (unsigned int ix = 0; ix < l.n[1]; ++ix)
+              {
+                const unsigned int cell = row * l.n[1] + ix;
+                for (unsigned int k = 0; k < (l.band[cell] ? l.r : 1); ++k)
+                  {
+                    strip.index.push_back(l.band[cell] ? l.fine(cell, s, k)
+                                                       : l.first[cell]);
+                    strip.fine.push_back(l.band[cell]);
+                  }
+              }
           }
-      }
-    smeared.assign(values.size(), 0.);
+  }
+
+
+  double
+  NestedCompliance::smear_strip(const Vector<double> &q,
+                                const Strip          &strip,
+                                const unsigned int    r,
+                                std::vector<double>  &q_eff) const
+  {
+    const unsigned int  n = strip.index.size();
+    std::vector<double> values(n), smeared(n, 0.);
+    for (unsigned int j = 0; j < n; ++j)
+      values[j] = q[strip.index[j]];
     const auto decay = [&](const unsigned int j) -> const CellDecay & {
-      return fine[j] ? fine_decay[r] : coarse_decay[r];
+      return strip.fine[j] ? fine_decay[r] : coarse_decay[r];
     };
-    const double E0 = smear_row(values.data(),
-                                values.size(),
-                                decay,
-                                creep.retardations[r].second,
-                                smeared.data());
+    const double E0 = smear_row(
+      values.data(), n, decay, creep.retardations[r].second, smeared.data());
     // A coarse cell keeps the mean of its r strips.
-    for (unsigned int j = 0; j < index.size(); ++j)
-      q_eff[index[j]] += fine[j] ? smeared[j] : smeared[j] / l.r;
+    for (unsigned int j = 0; j < n; ++j)
+      q_eff[strip.index[j]] +=
+        strip.fine[j] ? smeared[j] : smeared[j] / layout.r;
     return E0;
   }
 
@@ -177,7 +188,7 @@ namespace viscoslide
               }
             else
               for (unsigned int s = 0; s < l.r; ++s)
-                E0 += smear_fine_row(q, row, s, r, q_eff) / l.r;
+                E0 += smear_strip(q, strips[row * l.r + s], r, q_eff) / l.r;
             if (!edge[r].empty())
               edge[r][row] = c * E0;
           }

@@ -71,13 +71,23 @@ namespace viscoslide
     effective_traction(const Vector<double>             &q,
                        std::vector<double>              &q_eff,
                        std::vector<std::vector<double>> &edge) const;
-    // Smears one fine row s of coarse row `row` for one retardation.
+    // A fine row through a coarse row that holds band cells: its points
+    // along x (a coarse cell's point for each coarse cell it crosses) and
+    // whether each is fine; made once per layout.
+    struct Strip
+    {
+      std::vector<unsigned int> index;
+      std::vector<bool>         fine;
+    };
+    void
+    make_strips();
+    // Smears one strip for retardation r into q_eff; returns its value at
+    // the trailing end (creep.h, smear_row).
     double
-    smear_fine_row(const Vector<double> &q,
-                   unsigned int          row,
-                   unsigned int          s,
-                   unsigned int          r,
-                   std::vector<double>  &q_eff) const;
+    smear_strip(const Vector<double> &q,
+                const Strip          &strip,
+                unsigned int          r,
+                std::vector<double>  &q_eff) const;
     // u = C from q_eff and the edge values.
     void
     convolve(const std::vector<double>              &q_eff,
@@ -120,6 +130,9 @@ namespace viscoslide
     // each the exact influence less what the coarse grid carried.
     std::vector<double> interpolation, fine_from_band, fine_from_coarse,
       coarse_from_band;
+    // Per coarse row and fine row s in it, index row r + s; empty where
+    // the coarse row holds no band cell.
+    std::vector<Strip> strips;
     // Whether a coarse cell lies within `near` of a band cell.
     std::vector<bool> near_band;
   };

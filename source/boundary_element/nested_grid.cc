@@ -248,14 +248,8 @@ namespace viscoslide
                         const double          sigma_max,
                         const double          R) const
   {
-    const Points &p        = points;
-    double        extent_x = 0, extent_y = 0;
-    for (unsigned int j = 0; j < size(); ++j)
-      if (gaps[j] < 10 * eps)
-        {
-          extent_x = std::max(extent_x, std::abs(p.x[j]));
-          extent_y = std::max(extent_y, std::abs(p.y[j]));
-        }
+    const Points &p                 = points;
+    const auto [extent_x, extent_y] = reach_within(gaps, 10 * eps);
     std::vector<unsigned int> shown;
     for (unsigned int j = 0; j < size(); ++j)
       if (std::abs(p.x[j]) <= 1.25 * extent_x + 4 * dx &&

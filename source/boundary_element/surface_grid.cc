@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/boundary_element/surface_grid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -27,6 +28,22 @@ namespace viscoslide
     // The traction q pulls (attraction > 0), the solid's surface moves by
     // u towards the indenter: the work rate on the solid is -V q du/dx.
     return -speed * sum;
+  }
+
+
+  template <int dim>
+  std::pair<double, double>
+  SurfaceGrid<dim>::reach_within(const Vector<double> &gaps,
+                                 const double          gap) const
+  {
+    std::pair<double, double> reach{0., 0.};
+    for (unsigned int j = 0; j < size(); ++j)
+      if (gaps[j] < gap)
+        {
+          reach.first  = std::max(reach.first, std::abs(points.x[j]));
+          reach.second = std::max(reach.second, std::abs(points.y[j]));
+        }
+    return reach;
   }
 
 

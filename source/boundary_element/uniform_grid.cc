@@ -202,15 +202,8 @@ namespace viscoslide
         // size, every point; pressure in sigma_max, gap and displacement
         // in eps, lengths in R.
         const unsigned int n_x = shape[1], n_y = shape[0];
-        const double       dx       = this->dx;
-        const auto        &p        = this->points;
-        double             extent_x = 0, extent_y = 0;
-        for (unsigned int j = 0; j < u.size(); ++j)
-          if (gaps[j] < 10 * eps)
-            {
-              extent_x = std::max(extent_x, std::abs(p.x[j]));
-              extent_y = std::max(extent_y, std::abs(p.y[j]));
-            }
+        const double       dx           = this->dx;
+        const auto [extent_x, extent_y] = this->reach_within(gaps, 10 * eps);
         const auto half_points = [dx](const double extent, const unsigned n) {
           return std::min<unsigned int>(std::ceil((1.25 * extent + 4 * dx) /
                                                   dx),

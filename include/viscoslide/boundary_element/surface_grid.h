@@ -313,6 +313,11 @@ namespace viscoslide
     {
     }
 
+    // The largest |x| and |y| of the points where the gap is below `gap`:
+    // the reach of a map about the contact (write_map).
+    std::pair<double, double>
+    reach_within(const Vector<double> &gaps, double gap) const;
+
     // The neighbours of point j along x and the distances to them, for
     // measure().
     virtual unsigned int

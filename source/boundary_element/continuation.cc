@@ -115,6 +115,47 @@ namespace viscoslide
 
   template <int dim>
   bool
+  BoundaryElementSolver<dim>::start_sliding(const double target)
+  {
+    // The first speed: the one whose relaxation length is a tenth of the
+    // grid spacing for the slowest arm, or slower. The creep it switches on
+    // changes the work of adhesion at the edges by a fraction that grows
+    // with V tau over the cohesive zone, and a wide contact answers such a
+    // change by translating (and resizing) by that fraction of
+    // R sqrt(w / (E a)): at Tabor parameter 1000 and R_hat 1e7, thousands
+    // of eps at that speed, far beyond the reach of the linearization
+    // about rest. The response is linear in V near rest, so a slower first
+    // speed makes the step as small as Newton's method needs; the
+    // continuation in log V then takes the decades back with its secant.
+    double                 start        = std::min(target,
+                            0.1 * grid->spacing() /
+                              (scales.eps / scales.tau_ref *
+                               material.longest_relaxation_time()));
+    const SurfaceState     rest         = state;
+    const auto             placement_at = grid->placement();
+    constexpr unsigned int n_slower     = 8;
+    for (unsigned int k = 0; k <= n_slower; ++k, start /= 10)
+      {
+        set_speed(start);
+        // Without relaxation but at the slowest: a failure is the cue to go
+        // slower, not to relax across the jump.
+        if (solve(k == n_slower) >= 0)
+          return true;
+        if (placement_at)
+          grid->regrid(*placement_at, state);
+        state = rest;
+        if (k < n_slower)
+          pcout << "  the first speed V_hat " << V_hat
+                << " did not converge from rest; trying " << start / 10
+                << std::endl;
+      }
+    set_speed(0);
+    return false;
+  }
+
+
+  template <int dim>
+  bool
   BoundaryElementSolver<dim>::continue_to(
     const double                 target,
     const std::function<void()> &on_converged)
@@ -144,16 +185,8 @@ namespace viscoslide
                 return true;
               }
           }
-        const double start = std::min(target,
-                                      0.1 * grid->spacing() /
-                                        (scales.eps / scales.tau_ref *
-                                         material.longest_relaxation_time()));
-        set(std::log(start));
-        if (solve() < 0)
-          {
-            set_speed(0);
-            return false;
-          }
+        if (!start_sliding(target))
+          return false;
         on_converged();
       }
     // A line per step short of the target: from a slow start the
@@ -232,6 +265,7 @@ namespace viscoslide
     const std::function<void()> &,                                        \
     const std::function<bool()> &);                                       \
   template void BoundaryElementSolver<dim>::set_speed(double);            \
+  template bool BoundaryElementSolver<dim>::start_sliding(double);        \
   template bool BoundaryElementSolver<dim>::continue_to(                  \
     double, const std::function<void()> &);                               \
   template bool BoundaryElementSolver<dim>::continue_to_load(             \

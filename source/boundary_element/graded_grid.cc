@@ -151,6 +151,7 @@ namespace viscoslide
           }
       }
     set_cells(new_boundaries, edges, gap, state);
+    pins = {};
     ++n_generation;
     out << "Graded boundary-element grid: " << n << " cells, " << dx
         << " eps at the contact edges x = " << edges.first / scales.eps << ", "
@@ -267,15 +268,30 @@ namespace viscoslide
   bool
   GradedGrid::prepare_motions(const SurfaceQuantities &q, SurfaceState &state)
   {
-    // The grid about the edges of the start, so that the gap equations hold
-    // there: follow() refits the grid only when an edge strays from its
-    // focus by more than 0.5 dx/(ratio - 1), where the gap equations would
-    // ask the zone to move by tens of cells against the grid.
+    // Each edge's gap is pinned where the contact gap is crossed now, so
+    // that the pins hold at the start and the zone keeps the cells it has.
+    // Only an edge that strayed from its focus beyond the cells at most
+    // 1.5 times the finest (where follow() refits too) gets a grid made
+    // about it: a remade grid carries the zone's gaps by interpolation,
+    // whose error in a zone of a few cells is a residual of a sizeable
+    // fraction of eps at Tabor parameters of 1000.
     if (!(q.x_lead > q.x_trail))
       return false; // no contact
-    if (std::abs(q.x_trail - cells.edges.first) > 0.25 * dx ||
-        std::abs(q.x_lead - cells.edges.second) > 0.25 * dx)
+    const double tolerance =
+      0.5 * dx / (prm.boundary_element.grading_ratio - 1);
+    if (std::abs(q.x_trail - cells.edges.first) > tolerance ||
+        std::abs(q.x_lead - cells.edges.second) > tolerance)
       make_about(q.x_trail, q.x_lead, state);
+    const auto &x = points.x;
+    for (unsigned int e = 0; e < 2; ++e)
+      {
+        const double at = e == 0 ? q.x_trail : q.x_lead;
+        const auto   k  = std::upper_bound(x.begin(), x.end(), at) - x.begin();
+        if (k == 0 || k == long(x.size()))
+          return false;
+        const double t = (at - x[k - 1]) / (x[k] - x[k - 1]);
+        pins[e]        = {{k - 1, 1 - t}, {k, t}};
+      }
     return true;
   }
 
@@ -311,6 +327,8 @@ namespace viscoslide
   std::vector<std::pair<unsigned int, double>>
   GradedGrid::pin(const unsigned int k) const
   {
+    if (!pins[k].empty())
+      return pins[k];
     if (focus[0] < 1 || focus[1] >= size() || focus[1] <= focus[0])
       return {};
     return {{focus[k] - 1, 0.5}, {focus[k], 0.5}};

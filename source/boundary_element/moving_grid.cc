@@ -17,14 +17,19 @@ namespace viscoslide
     if (with_matrix)
       {
         // Each motion's column by a difference: the grid moved by a
-        // thousandth of its finest cell with the gaps kept, which changes
-        // the indenter's height at the points and the compliance. The
+        // tenth of its finest cell with the gaps kept, which changes the
+        // indenter's height at the points and the compliance. At a
+        // thousandth, at Tabor parameter 1000 and R_hat 1e7 (displacements
+        // of 1e4 eps on cells thousands of eps wide), Newton's direction
+        // was no descent direction (the residual grew in proportion to
+        // the step along it); at a tenth the truncation error, a fraction
+        // of the zone's ten cells or so, costs an iteration at most. The
         // present grid is kept whole for after.
         assemble(false);
         const Vector<double> r0 = residual, g = gaps, u_kept = state.u;
         const auto           from = grid->placement();
         auto                 kept = std::move(grid);
-        const double         step = 1e-3 * kept->spacing();
+        const double         step = 0.1 * kept->spacing();
         motion_columns.resize(n_motions);
         for (unsigned int k = 0; k < n_motions; ++k)
           {
@@ -53,47 +58,94 @@ namespace viscoslide
 
 
   template <int dim>
+  double
+  BoundaryElementSolver<dim>::pin_change(const Vector<double> &v,
+                                         const unsigned int    e) const
+  {
+    const unsigned int n       = state.u.size();
+    const double       d_delta = control.force_controlled ? v[n] : 0.;
+    double             change  = 0;
+    for (const auto &[i, w] : grid->pin(e))
+      change += w * v[i];
+    return -change - d_delta;
+  }
+
+
+  template <int dim>
   void
   BoundaryElementSolver<dim>::compute_moving_grid_update()
   {
-    // The Jacobian bordered by the motions' columns and the pins, by
-    // elimination: update = z + Z a, with J z = -r, J Z_k = -dr/dm_k, and
-    // a from the pins. J is nearly singular along an edge's translation;
-    // its solves carry that mode, the combination cancels it.
-    const unsigned int n         = state.u.size();
-    const unsigned int n_motions = grid->n_motions();
-    compute_update();
+    // The Jacobian bordered by the motions' columns c_k and the pins' rows,
+    //   [J C; P 0] (v, m) = (-r, -pin misfits),
+    // solved as one system by GMRES. J alone is nearly singular along the
+    // contact's translation and width (a wide contact's neutral modes), so
+    // eliminating the motions through solves with J (v = z + Z m) leaves
+    // errors along those modes in z and Z, at GMRES's tolerance times J's
+    // condition, that the combination does not cancel: at Tabor parameter
+    // 1000 and R_hat 1e7 they moved the edges by thousands of eps. The
+    // bordered system holds the edges and is well conditioned; the same
+    // elimination with the grid's preconditioner in place of J^-1 is its
+    // preconditioner.
+    const unsigned int          n_motions = grid->n_motions();
+    const unsigned int          N         = state.u.size() + 1;
+    NewtonPreconditioner       &P         = grid->preconditioner();
     std::vector<Vector<double>> Z(n_motions);
-    for (unsigned int k = 0; k < n_motions; ++k)
-      {
-        Vector<double> rhs(motion_columns[k]);
-        rhs *= -1.;
-        solve_linearized(rhs, Z[k]);
-      }
-    // The change of pin e by an update v (the gaps move with the grid).
-    const auto pin_change = [&](const Vector<double> &v, const unsigned int e) {
-      const double d_delta = control.force_controlled ? v[n] : 0.;
-      double       change  = 0;
-      for (const auto &[i, w] : grid->pin(e))
-        change += w * v[i];
-      return -change - d_delta;
-    };
     FullMatrix<double> M(n_motions, n_motions), M_inverse(n_motions, n_motions);
-    Vector<double>     b(n_motions), a(n_motions);
-    for (unsigned int e = 0; e < n_motions; ++e)
-      {
-        for (unsigned int k = 0; k < n_motions; ++k)
-          M(e, k) = pin_change(Z[k], e);
-        b[e] = -pin_misfit[e] - pin_change(update, e);
-      }
-    M_inverse.invert(M);
-    M_inverse.vmult(a, b);
-    motion_update.resize(n_motions);
     for (unsigned int k = 0; k < n_motions; ++k)
       {
-        update.add(a[k], Z[k]);
-        motion_update[k] = a[k];
+        Vector<double> c(motion_columns[k]);
+        c *= -1.;
+        Z[k].reinit(N);
+        P.vmult(Z[k], c);
       }
+    for (unsigned int e = 0; e < n_motions; ++e)
+      for (unsigned int k = 0; k < n_motions; ++k)
+        M(e, k) = pin_change(Z[k], e);
+    M_inverse.invert(M);
+
+    // The bordered matrix applied to (v, m).
+    const auto bordered = [this, N](Vector<double>       &dst,
+                                    const Vector<double> &src) {
+      Vector<double> v(N), Jv;
+      std::copy(src.begin(), src.begin() + N, v.begin());
+      jacobian_vmult(Jv, v);
+      for (unsigned int k = 0; k < motion_columns.size(); ++k)
+        Jv.add(src[N + k], motion_columns[k]);
+      dst.reinit(src.size());
+      std::copy(Jv.begin(), Jv.end(), dst.begin());
+      for (unsigned int e = 0; e < motion_columns.size(); ++e)
+        dst[N + e] = pin_change(v, e);
+    };
+    // Its inverse by elimination, J^-1 replaced by the preconditioner.
+    const auto elimination = [&, this](Vector<double>       &dst,
+                                       const Vector<double> &src) {
+      Vector<double> f(N), z(N), b(n_motions), m(n_motions);
+      std::copy(src.begin(), src.begin() + N, f.begin());
+      P.vmult(z, f);
+      for (unsigned int e = 0; e < n_motions; ++e)
+        b[e] = src[N + e] - pin_change(z, e);
+      M_inverse.vmult(m, b);
+      for (unsigned int k = 0; k < n_motions; ++k)
+        z.add(m[k], Z[k]);
+      dst.reinit(src.size());
+      std::copy(z.begin(), z.end(), dst.begin());
+      for (unsigned int k = 0; k < n_motions; ++k)
+        dst[N + k] = m[k];
+    };
+    Vector<double> rhs(N + n_motions), solution;
+    for (unsigned int j = 0; j < N; ++j)
+      rhs[j] = -residual[j];
+    for (unsigned int e = 0; e < n_motions; ++e)
+      rhs[N + e] = -pin_misfit[e];
+    run_gmres(bordered, elimination, rhs, solution);
+    update.reinit(N);
+    std::copy(solution.begin(), solution.begin() + N, update.begin());
+    motion_update.assign(solution.begin() + N, solution.end());
+    if (prm.solver.verbose)
+      pcout << "        edges move by " << motion_update[0] / scales.eps << ", "
+            << motion_update[1] / scales.eps
+            << " eps, the displacements by up to "
+            << update.linfty_norm() / scales.eps << " eps" << std::endl;
   }
 
 
@@ -163,6 +215,11 @@ namespace viscoslide
     for (unsigned int k = 0; k < grid->n_motions(); ++k)
       if (grid->pin(k).empty())
         return restore();
+    assemble_moving_grid(false);
+    if (prm.solver.verbose)
+      for (unsigned int k = 0; k < grid->n_motions(); ++k)
+        pcout << "      edge " << k << ": the gap at its pin misfits by "
+              << pin_misfit[k] / scales.eps << " eps" << std::endl;
     const int its = newton(moving_grid_problem(),
                            prm.solver.max_newton_iterations,
                            prm.solver.line_search,
@@ -180,8 +237,10 @@ namespace viscoslide
   // The class is instantiated in solver.cc; here the members this file
   // defines.
 #define VISCOSLIDE_INSTANTIATE(dim)                                         \
-  template void BoundaryElementSolver<dim>::assemble_moving_grid(bool);     \
-  template void BoundaryElementSolver<dim>::compute_moving_grid_update();   \
+  template void   BoundaryElementSolver<dim>::assemble_moving_grid(bool);   \
+  template void   BoundaryElementSolver<dim>::compute_moving_grid_update(); \
+  template double BoundaryElementSolver<dim>::pin_change(                   \
+    const Vector<double> &, unsigned int) const;                            \
   template NewtonProblem BoundaryElementSolver<dim>::moving_grid_problem(); \
   template int           BoundaryElementSolver<dim>::solve_moving_grid();
   VISCOSLIDE_INSTANTIATE(2)

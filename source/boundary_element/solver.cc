@@ -207,44 +207,71 @@ namespace viscoslide
 
   template <int dim>
   void
+  BoundaryElementSolver<dim>::jacobian_vmult(Vector<double>       &dst,
+                                             const Vector<double> &src) const
+  {
+    // The Jacobian: du + C[(q' + c) du + q' d delta], and the load row.
+    const unsigned int n     = state.u.size();
+    const auto        &area  = grid->at().area;
+    const bool         force = control.force_controlled;
+    Vector<double>     w(n), Cw;
+    double             load = 0;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const double du = src[j];
+        const double dd = force ? src[n] : 0.;
+        w[j]            = tangent[j] * (du + dd) + dashpot * du;
+        load += tangent[j] * (du + dd) * area[j];
+      }
+    grid->apply(w, Cw);
+    dst.reinit(n + 1);
+    for (unsigned int j = 0; j < n; ++j)
+      dst[j] = src[j] + Cw[j];
+    dst[n] = force ? load / scales.sigma_max : src[n];
+  }
+
+
+  template <int dim>
+  void
   BoundaryElementSolver<dim>::solve_linearized(const Vector<double> &rhs,
                                                Vector<double>       &solution)
   {
+    const NewtonPreconditioner &P = grid->preconditioner();
+    run_gmres([this](Vector<double>       &dst,
+                     const Vector<double> &src) { jacobian_vmult(dst, src); },
+              [&P](Vector<double> &dst, const Vector<double> &src) {
+                P.vmult(dst, src);
+              },
+              rhs,
+              solution);
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::run_gmres(const LinearMap      &op,
+                                        const LinearMap      &preconditioner,
+                                        const Vector<double> &rhs,
+                                        Vector<double>       &solution)
+  {
     TimerOutput::Scope t(timer, "boundary element: GMRES");
-    // The Jacobian: du + C[(q' + c) du + q' d delta], and the load row.
-    struct Jacobian
+    struct Map
     {
-      const BoundaryElementSolver &s;
+      const LinearMap &map;
       void
       vmult(Vector<double> &dst, const Vector<double> &src) const
       {
-        const unsigned int n     = s.state.u.size();
-        const auto        &area  = s.grid->at().area;
-        const bool         force = s.control.force_controlled;
-        Vector<double>     w(n), Cw;
-        double             load = 0;
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            const double du = src[j];
-            const double dd = force ? src[n] : 0.;
-            w[j]            = s.tangent[j] * (du + dd) + s.dashpot * du;
-            load += s.tangent[j] * (du + dd) * area[j];
-          }
-        s.grid->apply(w, Cw);
-        for (unsigned int j = 0; j < n; ++j)
-          dst[j] = src[j] + Cw[j];
-        dst[n] = force ? load / s.scales.sigma_max : src[n];
+        map(dst, src);
       }
-    } jacobian{*this};
-    solution.reinit(state.u.size() + 1);
+    };
+    solution.reinit(rhs.size());
     SolverControl solver_control(1000, 1e-8 * rhs.l2_norm(), false, false);
     SolverGMRES<Vector<double>> gmres(
       solver_control, SolverGMRES<Vector<double>>::AdditionalData(100));
-    NewtonPreconditioner &preconditioner = grid->preconditioner();
-    bool                  converged      = true;
+    bool converged = true;
     try
       {
-        gmres.solve(jacobian, solution, rhs, preconditioner);
+        gmres.solve(Map{op}, solution, rhs, Map{preconditioner});
       }
     catch (SolverControl::NoConvergence &)
       {
@@ -252,9 +279,13 @@ namespace viscoslide
         // preconditioner hears of it.
         converged = false;
       }
+    if (prm.solver.verbose)
+      pcout << "        GMRES: " << solver_control.last_step()
+            << " iterations, " << (converged ? "converged" : "not converged")
+            << std::endl;
     gmres_iterations += solver_control.last_step();
     ++gmres_solves;
-    preconditioner.solved(solver_control.last_step(), converged);
+    grid->preconditioner().solved(solver_control.last_step(), converged);
   }
 
 

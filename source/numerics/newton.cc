@@ -61,6 +61,9 @@ namespace viscoslide
             p.step(alpha);
             p.assemble(false);
             const double r = p.residual_norm();
+            if (verbose && line_search)
+              out << "        trial alpha = " << alpha << ": residual " << r
+                  << std::endl;
             if (std::isfinite(r) &&
                 (r < (1. - 1e-4 * alpha) * residual || !line_search))
               {

@@ -152,7 +152,11 @@ namespace viscoslide
     const double                     depth;
     Cells                            cells;
     // The boundaries at the two edges: the focus of each edge.
-    std::array<unsigned int, 2>           focus{};
+    std::array<unsigned int, 2> focus{};
+    // Where each edge's gap is pinned (points and weights) when that is
+    // not the focus: the crossing of the contact gap measured when the
+    // motions were prepared, on the grid since (empty: the focus).
+    std::array<std::vector<std::pair<unsigned int, double>>, 2> pins;
     double                                margin_factor = 0.5;
     std::unique_ptr<GradedCompliance>     compliance;
     std::unique_ptr<WindowPreconditioner> window;

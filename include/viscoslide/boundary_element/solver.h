@@ -141,9 +141,21 @@ namespace viscoslide
     residual_norm() const;
     void
     compute_update();
+    // The Jacobian (and the load row) applied to `src`.
+    void
+    jacobian_vmult(Vector<double> &dst, const Vector<double> &src) const;
     // GMRES on the Jacobian (and the load row) for `rhs`.
     void
     solve_linearized(const Vector<double> &rhs, Vector<double> &solution);
+    // GMRES on `op` with `preconditioner` for `rhs`, counted in the
+    // statistics, the grid's preconditioner told how it went.
+    using LinearMap =
+      std::function<void(Vector<double> &, const Vector<double> &)>;
+    void
+    run_gmres(const LinearMap      &op,
+              const LinearMap      &preconditioner,
+              const Vector<double> &rhs,
+              Vector<double>       &solution);
     // The measures of the present state.
     void
     update_quantities();
@@ -168,6 +180,10 @@ namespace viscoslide
     assemble_moving_grid(bool with_matrix);
     void
     compute_moving_grid_update();
+    // The change of pin e's gap by an update v of the displacements and
+    // delta (the gaps move with the grid).
+    double
+    pin_change(const Vector<double> &v, unsigned int e) const;
 
     // --- Continuation [continuation.cc]
 
@@ -202,6 +218,10 @@ namespace viscoslide
       const std::function<bool()> &done = [] { return false; });
     void
     set_speed(double V_hat);
+    // From rest to the first speed of the continuation towards `target`
+    // (slower by decades where a step from rest fails).
+    bool
+    start_sliding(double target);
 
     // --- The start [start.cc]
 

@@ -340,21 +340,29 @@ def nested_curve(argv):
 
 def graded_curve(argv):
     """The graded grid's curve at real scale (parameter_files/real_scale_cylinder.prm:
-    R_hat 1e7, F_hat 1, six speeds from 0.01 to 1000) on one process at the
-    Tabor parameter (default 100) and Grid spacing (in eps, default 0.05)
-    given: the wall time, the cells, GMRES iterations per Newton step, the
-    energy balance of each row.
+    F_hat 1) on one process at the Tabor parameter (default 100), Grid spacing
+    (in eps, default 0.05), R_hat (default 1e7), Grading ratio (default 1.05)
+    and number of speeds from 0.01 to 1000 (default 6, one per decade; 21 is
+    four per decade) given: the wall time, the cells, GMRES iterations per
+    Newton step, mu, L_hat and the energy balance of each speed.
 
-        scripts/bench_graded [muT [spacing]]"""
+        scripts/bench_graded [muT [spacing [R_hat [ratio [n_speeds]]]]]"""
     prepare()
     tabor = float(argv[0]) if argv else 100.
     spacing = float(argv[1]) if len(argv) > 1 else 0.05
+    r_hat = float(argv[2]) if len(argv) > 2 else 1e7
+    ratio = float(argv[3]) if len(argv) > 3 else 1.05
+    n_speeds = int(argv[4]) if len(argv) > 4 else 6
+    speeds = ', '.join(f'{10 ** (-2 + 5 * k / (n_speeds - 1)):.6g}' for k in range(n_speeds))
     work = tempfile.mkdtemp()
     path = prm.override_file('parameter_files/real_scale_cylinder.prm',
                              os.path.join(work, 'run.prm'),
                              {'Output/Output directory': f'{work}/out',
                               'Adhesion/Tabor parameter': tabor,
-                              'Boundary element/Grid spacing': spacing})
+                              'Adhesion/R over eps': r_hat,
+                              'Boundary element/Grid spacing': spacing,
+                              'Boundary element/Grading ratio': ratio,
+                              'Sliding/Sliding speed': speeds})
     log = os.path.join(work, 'log')
     code, wall = timed_run([VISCOSLIDE, path], log)
     text = open(log).read()
@@ -366,8 +374,14 @@ def graded_curve(argv):
         if line.startswith('GMRES:'):
             print(line)
     table = rows(f'{work}/out/steady_state.csv')
+    print('V_hat      mu          L_hat      energy balance')
+    for r in table:
+        mu = float(r['mu'])
+        balance = float(r['mu_energy']) / mu - 1 if mu > 0 else float('nan')
+        print(f"{float(r['V_hat']):<10g} {mu:.6e}  {float(r['L_hat']):.6e}  {balance * 100:+.2f} %")
     balance = [float(r['mu_energy']) / float(r['mu']) - 1 for r in table if float(r['mu']) > 0]
-    print(f"muT {tabor:g}, R_hat 1e7, {spacing:g} eps at the edges: {min(cells)} to {max(cells)} cells, "
+    print(f"muT {tabor:g}, R_hat {r_hat:g}, {spacing:g} eps at the edges, ratio {ratio:g}: "
+          f"{min(cells)} to {max(cells)} cells, "
           f"{len(table)} speeds, {sum(r['steady'] == '1' for r in table)} steady, energy balance within "
           f"{100 * max(map(abs, balance)):.2f} %, wall {wall:.1f} s")
     print(f'output in {work}/out')

@@ -5,6 +5,7 @@
 
 #include <viscoslide/boundary_element/solver.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace viscoslide
@@ -164,8 +165,14 @@ namespace viscoslide
         misfit += m * m;
       return std::sqrt(r * r + misfit / (scales.eps * scales.eps));
     };
-    p.compute_update = [this] { compute_moving_grid_update(); };
-    p.update_norm    = [this] {
+    p.compute_update    = [this] { compute_moving_grid_update(); };
+    p.update_negligible = [this] {
+      double largest = update.linfty_norm();
+      for (const double m : motion_update)
+        largest = std::max(largest, std::abs(m));
+      return largest <= 0.1 * grid->spacing();
+    };
+    p.update_norm = [this] {
       double norm = update.l2_norm();
       for (const double m : motion_update)
         norm += std::abs(m);

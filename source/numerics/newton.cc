@@ -50,7 +50,8 @@ namespace viscoslide
         // Accept the first step that reduces the residual, else give up
         // (the caller cuts the step). Within a few tolerances the line
         // search sees only round-off (a graded grid's displacements are 1e4
-        // eps and more): that is the equilibrium.
+        // eps and more): that is the equilibrium if the update is as small
+        // as that round-off explains.
         p.remember_iterate();
         double       alpha     = 1.;
         bool         reduced   = false;
@@ -75,9 +76,10 @@ namespace viscoslide
           }
         if (verbose)
           out << "        line search: alpha = " << alpha << std::endl;
+        const bool negligible = !p.update_negligible || p.update_negligible();
         if (!reduced)
           {
-            if (residual > round_off)
+            if (residual > round_off || !negligible)
               return -1;
             p.step(0.);
             p.assemble(true);
@@ -90,7 +92,7 @@ namespace viscoslide
         crawling = alpha <= 1. / 16 ? crawling + 1 : 0;
         if (crawling == 3)
           {
-            if (trial <= round_off)
+            if (trial <= round_off && negligible)
               {
                 p.assemble(true);
                 return it + 1;

@@ -109,6 +109,12 @@ namespace viscoslide
     std::function<void(double c)> set_dashpot;
     // Largest displacement in the update, for relax().
     std::function<double()> update_max_norm;
+    // Whether the last update is as small as the round-off of the
+    // residual can explain (optional: taken as true if not set). Where
+    // no step reduces a residual within a few tolerances, Newton's method
+    // takes the iterate only if so: a nearly singular Jacobian turns a
+    // residual at the round-off into a large change of the solution.
+    std::function<bool()> update_negligible;
   };
 
   // Where a solver keeps its iterate (the displacements and, under force

@@ -127,13 +127,15 @@ namespace viscoslide
     // about rest. The response is linear in V near rest, so a slower first
     // speed makes the step as small as Newton's method needs; the
     // continuation in log V then takes the decades back with its secant.
-    double                 start        = std::min(target,
+    double             start        = std::min(target,
                             0.1 * grid->spacing() /
                               (scales.eps / scales.tau_ref *
                                material.longest_relaxation_time()));
-    const SurfaceState     rest         = state;
-    const auto             placement_at = grid->placement();
-    constexpr unsigned int n_slower     = 8;
+    const SurfaceState rest         = state;
+    const auto         placement_at = grid->placement();
+    // Only a grid whose edges are unknowns can follow the translation;
+    // another relaxes across the first step as before.
+    const unsigned int n_slower = grid->n_motions() > 0 ? 8 : 0;
     for (unsigned int k = 0; k <= n_slower; ++k, start /= 10)
       {
         set_speed(start);

@@ -143,10 +143,13 @@ namespace viscoslide
     std::copy(solution.begin(), solution.begin() + N, update.begin());
     motion_update.assign(solution.begin() + N, solution.end());
     if (prm.solver.verbose)
-      pcout << "        edges move by " << motion_update[0] / scales.eps << ", "
-            << motion_update[1] / scales.eps
-            << " eps, the displacements by up to "
-            << update.linfty_norm() / scales.eps << " eps" << std::endl;
+      {
+        pcout << "        the motions:";
+        for (const double m : motion_update)
+          pcout << " " << m / scales.eps;
+        pcout << " eps, the displacements by up to "
+              << update.linfty_norm() / scales.eps << " eps" << std::endl;
+      }
   }
 
 
@@ -170,7 +173,7 @@ namespace viscoslide
       double largest = update.linfty_norm();
       for (const double m : motion_update)
         largest = std::max(largest, std::abs(m));
-      return largest <= 0.1 * grid->spacing();
+      return largest <= negligible_update * grid->spacing();
     };
     p.update_norm = [this] {
       double norm = update.l2_norm();
@@ -222,11 +225,14 @@ namespace viscoslide
     for (unsigned int k = 0; k < grid->n_motions(); ++k)
       if (grid->pin(k).empty())
         return restore();
-    assemble_moving_grid(false);
     if (prm.solver.verbose)
-      for (unsigned int k = 0; k < grid->n_motions(); ++k)
-        pcout << "      edge " << k << ": the gap at its pin misfits by "
-              << pin_misfit[k] / scales.eps << " eps" << std::endl;
+      {
+        // Newton's method assembles again; the misfits are only shown.
+        assemble_moving_grid(false);
+        for (unsigned int k = 0; k < grid->n_motions(); ++k)
+          pcout << "      edge " << k << ": the gap at its pin misfits by "
+                << pin_misfit[k] / scales.eps << " eps" << std::endl;
+      }
     const int its = newton(moving_grid_problem(),
                            prm.solver.max_newton_iterations,
                            prm.solver.line_search,

@@ -302,12 +302,12 @@ namespace viscoslide
     p.compute_update  = [this] { compute_update(); };
     p.update_norm     = [this] { return update.l2_norm(); };
     p.update_max_norm = [this] { return update.linfty_norm(); };
-    // On a grid that follows the edges, a tenth of its finest cell: along
-    // the nearly singular translation of a wide contact a residual within
-    // the tolerance can still ask for eps.
+    // On a grid that follows the edges: along the nearly singular
+    // translation of a wide contact a residual within the tolerance can
+    // still ask for eps.
     if (grid->n_motions() > 0)
       p.update_negligible = [this] {
-        return update.linfty_norm() <= 0.1 * grid->spacing();
+        return update.linfty_norm() <= negligible_update * grid->spacing();
       };
     p.remember_iterate = [this] { start_of_step = state; };
     p.step             = [this](const double alpha) {

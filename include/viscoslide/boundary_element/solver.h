@@ -180,6 +180,10 @@ namespace viscoslide
     assemble_moving_grid(bool with_matrix);
     void
     compute_moving_grid_update();
+    // The largest update, in finest cells, that Newton's method takes as
+    // round-off where no step reduces a residual at the round-off (on a
+    // grid whose edges are unknowns, with the motions).
+    static constexpr double negligible_update = 0.1;
     // The change of pin e's gap by an update v of the displacements and
     // delta (the gaps move with the grid).
     double

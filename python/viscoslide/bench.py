@@ -342,18 +342,21 @@ def graded_curve(argv):
     """The graded grid's curve at real scale (parameter_files/real_scale_cylinder.prm:
     F_hat 1) on one process at the Tabor parameter (default 100), Grid spacing
     (in eps, default 0.05), R_hat (default 1e7), Grading ratio (default 1.05)
-    and number of speeds from 0.01 to 1000 (default 6, one per decade; 21 is
-    four per decade) given: the wall time, the cells, GMRES iterations per
-    Newton step, mu, L_hat and the energy balance of each speed.
+    and number of speeds from V_min to V_max (default 6 from 0.01 to 1000,
+    one per decade; 21 is four per decade) given: the wall time, the cells,
+    GMRES iterations per Newton step, mu, L_hat and the energy balance of
+    each speed.
 
-        scripts/bench_graded [muT [spacing [R_hat [ratio [n_speeds]]]]]"""
+        scripts/bench_graded [muT [spacing [R_hat [ratio [n_speeds [V_min [V_max]]]]]]]"""
     prepare()
     tabor = float(argv[0]) if argv else 100.
     spacing = float(argv[1]) if len(argv) > 1 else 0.05
     r_hat = float(argv[2]) if len(argv) > 2 else 1e7
     ratio = float(argv[3]) if len(argv) > 3 else 1.05
     n_speeds = int(argv[4]) if len(argv) > 4 else 6
-    speeds = ', '.join(f'{10 ** (-2 + 5 * k / (n_speeds - 1)):.6g}' for k in range(n_speeds))
+    v_min = float(argv[5]) if len(argv) > 5 else 0.01
+    v_max = float(argv[6]) if len(argv) > 6 else 1000.
+    speeds = ', '.join(log_speeds(n_speeds, v_min, v_max))
     work = tempfile.mkdtemp()
     path = prm.override_file('parameter_files/real_scale_cylinder.prm',
                              os.path.join(work, 'run.prm'),

@@ -49,15 +49,12 @@ namespace viscoslide
                                      const std::function<void()> &on_converged,
                                      const std::function<bool()> &done)
   {
-    double       at = from, size = step, at_before = 0;
-    SurfaceState before;
-    unsigned int generation_before = 0;
+    double at = from, size = step;
     // A moving grid's contact edges at the step before, for their secant;
     // on such a grid a shorter step is cheaper than the relaxation, which
     // moves the edges by a fraction of eps per step.
-    const bool                moving = grid->follows_contact();
-    std::pair<double, double> edges_before;
-    bool                      have_edges_before = false;
+    const bool  moving = grid->follows_contact();
+    StepBefore &before = step_before;
     while (at != to)
       {
         const bool         last     = std::abs(to - at) <= size * (1 + 1e-9);
@@ -68,24 +65,23 @@ namespace viscoslide
         const std::pair<double, double> edges_at{last_quantities.x_trail,
                                                  last_quantities.x_lead};
         set(next);
-        if (moving && have_edges_before)
-          grid->predict(edges_at,
-                        edges_before,
-                        (next - at) / (at - at_before),
-                        state);
-        const double ratio = generation_before == grid->generation() &&
-                                 before.u.size() == state.u.size()
-                               ? (next - at) / (at - at_before)
-                               : 0.;
-        predict(at_state, generation_at, before, ratio);
+        const double ratio = !before.valid ? 0.
+                             : before.from_rest
+                               ? std::exp(next - at) - 1
+                               : (next - at) / (at - before.at);
+        if (moving && before.valid)
+          grid->predict(edges_at, before.edges, ratio, state);
+        predict(at_state,
+                generation_at,
+                before.state,
+                before.valid && before.generation == grid->generation() &&
+                    before.state.u.size() == state.u.size()
+                  ? ratio
+                  : 0.);
         if (solve(!moving) >= 0)
           {
-            at_before         = at;
-            before            = at_state;
-            generation_before = generation_at;
-            edges_before      = edges_at;
-            have_edges_before = moving;
-            at                = next;
+            before = {true, false, at, at_state, generation_at, edges_at};
+            at     = next;
             on_converged();
             if (done())
               return true;
@@ -133,6 +129,12 @@ namespace viscoslide
                                material.longest_relaxation_time()));
     const SurfaceState rest         = state;
     const auto         placement_at = grid->placement();
+    const StepBefore   at_rest{true,
+                             true,
+                             0.,
+                             rest,
+                             grid->generation(),
+                             {last_quantities.x_trail, last_quantities.x_lead}};
     // Only a grid whose edges are unknowns can follow the translation;
     // another relaxes across the first step as before.
     const unsigned int n_slower = grid->n_motions() > 0 ? 8 : 0;
@@ -142,7 +144,10 @@ namespace viscoslide
         // Without relaxation but at the slowest: a failure is the cue to go
         // slower, not to relax across the jump.
         if (solve(k == n_slower) >= 0)
-          return true;
+          {
+            step_before = at_rest;
+            return true;
+          }
         if (placement_at)
           grid->regrid(*placement_at, state);
         state = rest;
@@ -171,6 +176,7 @@ namespace viscoslide
     };
     if (V_hat == 0)
       {
+        step_before = {};
         // From the relaxed state: directly, or else from the speed whose
         // relaxation length is a tenth of the grid spacing for the slowest
         // arm (a spectrum's may be decades slower than the time unit of
@@ -218,6 +224,7 @@ namespace viscoslide
     double &parameter =
       control.force_controlled ? control.target_force : state.delta;
     const double distance = std::abs(target - parameter);
+    step_before           = {};
     return follow(
       parameter,
       target,
@@ -235,6 +242,7 @@ namespace viscoslide
                                             const std::function<void()> &report,
                                             const std::function<bool()> &done)
   {
+    step_before = {};
     if (!follow(
           state.delta,
           to * scales.eps,

@@ -191,10 +191,29 @@ namespace viscoslide
 
     // --- Continuation [continuation.cc]
 
+    // The converged state a step before the present one, for the secant
+    // predictor. It outlives a call of follow(): the speeds of a list are
+    // one continuation, and the first step towards a station is predicted
+    // as the others are (without it, on a grid whose edges are unknowns,
+    // Newton's method must find the contact's whole translation, and at
+    // Tabor parameters of 1000 it then takes steps of about 1 % in V).
+    struct StepBefore
+    {
+      bool valid = false;
+      // The state before is rest (V_hat = 0), from which the response is
+      // linear in V: the step's ratio is then exp(next - at) - 1 (the
+      // parameter is log V).
+      bool                      from_rest = false;
+      double                    at        = 0;
+      SurfaceState              state;
+      unsigned int              generation = 0;
+      std::pair<double, double> edges;
+    };
+    StepBefore step_before;
     // Steps the control parameter from its present value to `to` through
     // set(value), in steps no larger than `step` (halved where Newton
     // fails, down to `min_step`), calling on_converged after each and
-    // stopping early once done() holds.
+    // stopping early once done() holds; from step_before where valid.
     bool
     follow(
       double                             from,

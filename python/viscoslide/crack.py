@@ -1,0 +1,283 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""The contact edges of a sliding cylinder as viscoelastic cracks
+(doc/boundary_element.md, The edges as cracks).
+
+Where the adhesive zone and the relaxation length V tau_c are both small
+against the contact, the contact looks from afar like an elastic contact
+of the relaxed solid whose edges carry square-root singularities: the
+trailing edge an opening crack, the leading edge a closing one. Their
+energy release rates G, measured with the relaxed modulus, are the
+apparent works of adhesion, and the friction force per unit length is
+their difference (the energy balance of the two moving cracks, the bulk's
+hysteresis aside).
+
+Internal units as the program's: eps = 1, E0* = 1; the work of adhesion
+dgamma = sqrt(muT^3/R_hat).
+
+* `edge_energy_release(F, x_trail, x_lead, R)`: G at each edge from the
+  load and the edges of a computed steady state (the relaxed outer
+  solution, below);
+* `persson_brener(v_tau_c, dgamma, einf_over_e0)`: G/dgamma of an opening
+  crack in a standard linear solid (Persson and Brener 2005), its cut-off
+  where the crack tip's stress reaches the law's peak.
+
+The outer solution: a rigid parabola h = x^2/(2R) on the relaxed
+half-plane, in contact on c1 < x < c2 (centre e, half-width c), with the
+pressure (compressive positive, xi = x - e)
+    p = sqrt(c^2 - xi^2)/(2R) + (A - e xi/(2R))/sqrt(c^2 - xi^2),
+    A = (F - pi c^2/(4R))/pi,
+the Hertz part, a load and a tilt (the slope e/R of the profile at the
+centre), each solving (2/pi) PV int p(t)/(x - t) dt = x/R (Johnson, Contact
+Mechanics, 2.25). At an edge p ~ (A -+ e c/(2R))/sqrt(2 c s) = K/sqrt(2 pi s)
+at the distance s (upper sign at c2), and G = K^2/2 (a rigid body on the
+half-plane, E0* = 1). Their difference, pi A e/R, is the x force of the
+pressure on the profile: the friction of the crack picture.
+"""
+import json
+import math
+import os
+import sys
+
+from . import style, tables
+
+# Hunter's closed form (tests/hunter.py) is the adhesionless reference.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tests'))
+from hunter import hunter  # noqa: E402
+
+
+def edge_energy_release(F, x_trail, x_lead, R):
+    """(G at the trailing edge x_trail, G at the leading edge x_lead) of the
+    relaxed contact under the load F per unit length (internal units)."""
+    c = 0.5 * (x_lead - x_trail)
+    e = 0.5 * (x_lead + x_trail)
+    A = (F - math.pi * c * c / (4 * R)) / math.pi
+    g = lambda coefficient: math.pi * coefficient ** 2 / (2 * c)
+    return g(A + e * c / (2 * R)), g(A - e * c / (2 * R))
+
+
+def persson_brener(v_tau_c, dgamma, einf_over_e0):
+    """G/dgamma of the opening crack at the speed whose retardation length
+    is v_tau_c (eps), in the standard linear solid whose glassy modulus is
+    einf_over_e0 times the relaxed one, for the Lennard-Jones law of work
+    dgamma (its peak stress 16 dgamma/(9 sqrt 3)).
+
+    Persson and Brener, Phys. Rev. E 71, 036123 (2005):
+        dgamma/G = 1 - (2/pi) E0 int_0^{2 pi v/a} F(w)/w Im 1/E(w) dw,
+        F(w) = sqrt(1 - (w a/(2 pi v))^2),
+    with a the cut-off where the stress of the crack tip's field,
+    K/sqrt(2 pi a), reaches the law's peak: a = K^2/(2 pi sigma^2) =
+    G/(pi sigma^2). For 1/E = 1/Einf + (1/E0 - 1/Einf)/(1 - i w tau_c) the
+    integral is closed: with b = 2 pi v tau_c/a,
+        dgamma/G = 1 - (1 - E0/Einf) (sqrt(1 + b^2) - 1)/b,
+    from 1 at rest to E0/Einf when the zone is passed in much less than
+    tau_c. Solved for G by bisection (the right side rises with G)."""
+    sigma = 16 * dgamma / (9 * math.sqrt(3))
+    loss = 1 - 1 / einf_over_e0
+
+    def excess(g):
+        a = g * dgamma / (math.pi * sigma ** 2)
+        b = 2 * math.pi * v_tau_c / a
+        return 1 / g - (1 - loss * (math.sqrt(1 + b * b) - 1) / b)
+
+    low, high = 1.0, einf_over_e0
+    for _ in range(100):
+        middle = math.sqrt(low * high)
+        if excess(middle) > 0:
+            low = middle
+        else:
+            high = middle
+    return math.sqrt(low * high)
+
+
+def contact_edges(profile, R, threshold=1.2):
+    """The contact's trailing and leading x (internal units) in a surface
+    profile (x_over_R, gap_over_eps): where the gap crosses `threshold`
+    eps, interpolated linearly, outermost crossings."""
+    x = [R * float(r['x_over_R']) for r in profile]
+    g = [float(r['gap_over_eps']) for r in profile]
+    inside = [k for k in range(len(g)) if g[k] < threshold]
+    if not inside:
+        raise ValueError('no contact in the profile')
+
+    def crossing(k, j):
+        return x[k] + (threshold - g[k]) * (x[j] - x[k]) / (g[j] - g[k])
+
+    first, last = inside[0], inside[-1]
+    trail = crossing(first, first - 1) if first > 0 else x[first]
+    lead = crossing(last, last + 1) if last + 1 < len(x) else x[last]
+    return trail, lead
+
+
+def jkr_half_width(F, dgamma, R):
+    """The JKR line contact's half-width under F (internal units, relaxed
+    modulus): F = pi c^2/(4R) - sqrt(2 pi dgamma c), the larger root."""
+    low, high = (2 * dgamma * R * R / math.pi) ** (1 / 3), 1.0
+    while math.pi * high ** 2 / (4 * R) - math.sqrt(2 * math.pi * dgamma * high) < F:
+        high *= 2
+    for _ in range(200):
+        c = 0.5 * (low + high)
+        if math.pi * c ** 2 / (4 * R) - math.sqrt(2 * math.pi * dgamma * c) < F:
+            low = c
+        else:
+            high = c
+    return 0.5 * (low + high)
+
+
+def cut_off(dgamma):
+    """The relaxed crack tip's cut-off dgamma/(pi sigma^2) (persson_brener):
+    the unit of the speeds' retardation lengths at which the edges of
+    every Tabor parameter and R_hat meet alike."""
+    return dgamma / (math.pi * (16 * dgamma / (9 * math.sqrt(3))) ** 2)
+
+
+def analyse(out):
+    """Per station of a finished 2D run in `out` (half-plane, standard
+    linear solid, force control; e.g. scripts/bench_graded): the speed,
+    mu, the energy balance, L_hat against JKR's, the edges' G/dgamma, the
+    friction of the edges as cracks (G_trail - G_lead)/F and the bulk's
+    (Hunter's adhesionless mu at the Hertz load of the same contact width,
+    times that load over F), Persson and Brener's G/dgamma."""
+    with open(os.path.join(out, 'parameters.json')) as f:
+        p = json.load(f)
+    muT = float(p['Adhesion']['Tabor parameter']['value'])
+    R = float(p['Adhesion']['R over eps']['value'])
+    ratio = 1 / float(p['Material']['E0 over Einf']['value'])
+    retardation = p['Material']['Time constant']['value'] == 'retardation'
+    dgamma = math.sqrt(muT ** 3 / R)
+    unit = (math.pi * dgamma ** 2 * R) ** (1 / 3)
+    result = []
+    for k, r in enumerate(tables.read(os.path.join(out, 'steady_state.csv'))):
+        v_tau_c = r['V_hat'] * (1 if retardation else ratio)
+        F = r['F_n_hat'] * unit
+        profile = tables.read(os.path.join(out, f'surface_profile_steady_{k:02d}.csv'))
+        trail, lead = contact_edges(profile, R)
+        g_trail, g_lead = edge_energy_release(F, trail, lead, R)
+        hertz = math.pi * (lead - trail) ** 2 / (16 * R)
+        result.append(dict(
+            muT=muT, R_hat=R, V_hat=r['V_hat'], v_tau_c=v_tau_c, s=v_tau_c / cut_off(dgamma),
+            mu=r['mu'], L_hat=r['L_hat'],
+            balance=r['mu_energy'] / r['mu'] - 1,
+            L_jkr=r['L_hat'] * R / (2 * jkr_half_width(F, dgamma, R)) - 1,
+            G_trail=g_trail / dgamma, G_lead=g_lead / dgamma, mu_cracks=(g_trail - g_lead) / F,
+            mu_bulk=hunter(hertz, R, 1.0, ratio, v_tau_c)['mu'] * hertz / F,
+            persson_brener=persson_brener(v_tau_c, dgamma, ratio), einf_over_e0=ratio))
+    return result
+
+
+def print_table(rows):
+    print(f"muT {rows[0]['muT']:g}, R_hat {rows[0]['R_hat']:g} "
+          "(s = V tau_c/a0; cracks, bulk: each part over mu)")
+    print('V_hat      s          mu           balance  L/L_JKR-1  G_trail  P&B      G_lead   '
+          'cracks     bulk       sum-1')
+    for r in rows:
+        parts = r['mu_cracks'] / r['mu'], r['mu_bulk'] / r['mu']
+        print(f"{r['V_hat']:<10.4g} {r['s']:<10.4g} {r['mu']:.5e}  {100 * r['balance']:+6.2f} %"
+              f"  {100 * r['L_jkr']:+7.3f} %  {r['G_trail']:7.4f}  {r['persson_brener']:7.4f}  "
+              f"{r['G_lead']:7.4f}  {100 * parts[0]:7.3f} %  {100 * parts[1]:7.3f} %  "
+              f"{100 * (sum(parts) - 1):+6.2f} %")
+
+
+def interpolate_log(x, xs, ys):
+    """ys at x, linear in log x between the points xs (ascending); None outside."""
+    for k in range(len(xs) - 1):
+        if xs[k] <= x <= xs[k + 1]:
+            t = math.log(x / xs[k]) / math.log(xs[k + 1] / xs[k])
+            return ys[k] + t * (ys[k + 1] - ys[k])
+    return None
+
+
+def print_collapse(runs):
+    """Each run's trailing G against the largest Tabor parameter's at the
+    same s (where V tau_c is below a hundredth of the contact's width in
+    both), and the factor on s that brings Persson and Brener's G to the
+    largest Tabor parameter's at G = 2, 4 and 8 dgamma."""
+    top = max(runs, key=lambda rows: rows[0]['muT'])
+    narrow = lambda r: r['v_tau_c'] < 0.01 * r['L_hat'] * r['R_hat']
+    for rows in runs:
+        if rows is top:
+            continue
+        gaps = []
+        for r in rows:
+            g = interpolate_log(r['s'], [t['s'] for t in top], [t['G_trail'] for t in top])
+            if g is not None and narrow(r):
+                gaps.append((r['s'], r['G_trail'] / g - 1))
+        worst = max(gaps, key=lambda x: abs(x[1]))
+        print(f"G_trail at muT {rows[0]['muT']:g} against muT {top[0]['muT']:g} at the same s, "
+              f"{len(gaps)} speeds: within {100 * abs(worst[1]):.2f} % (at s = {worst[0]:.3g})")
+    einf = top[0]['einf_over_e0']
+    for level in (2, 4, 8):
+        pairs = [(r['G_trail'], r['s']) for r in top]
+        s_run = next((a[1] * (b[1] / a[1]) ** ((level - a[0]) / (b[0] - a[0]))
+                      for a, b in zip(pairs, pairs[1:]) if a[0] <= level <= b[0]), None)
+        low, high = 1e-6, 1e6
+        for _ in range(200):
+            mid = math.sqrt(low * high)
+            low, high = (mid, high) if persson_brener_scaled(mid, einf) < level else (low, mid)
+        if s_run:
+            print(f"G = {level} dgamma: s = {s_run:.4g} (muT {top[0]['muT']:g}), "
+                  f"Persson and Brener {low:.4g}: a factor {s_run / low:.3g}")
+
+
+def persson_brener_scaled(s, einf_over_e0):
+    """persson_brener at V tau_c = s times the relaxed cut-off."""
+    return persson_brener(s * cut_off(1.0), 1.0, einf_over_e0)
+
+
+def figure(runs, path):
+    """Left: G/dgamma of both edges over s, against Persson and Brener's.
+    Right: mu of the full solution against its parts, the edges as cracks
+    and the bulk's hysteresis (Hunter)."""
+    plt = style.pyplot(style.CURVES, 'scripts/edge_cracks')
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.6))
+    colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
+    for k, (colour, rows) in enumerate(zip(colours, runs)):
+        label = rf"$\mu_T = {rows[0]['muT']:g}$"
+        s = [r['s'] for r in rows]
+        # the smaller Tabor parameters smaller and on top: the points meet
+        size = 4 + 2.5 * (len(runs) - 1 - k)
+        left.loglog(s, [r['G_trail'] for r in rows], 'o', mfc='none', mew=1.2, color=colour,
+                    ms=size, zorder=3 + k, label=label + ', trailing edge')
+        left.loglog(s, [r['G_lead'] for r in rows], 's', mfc='none', mew=1.2, color=colour,
+                    ms=size, zorder=3 + k, label=label + ', leading edge')
+        V = [r['V_hat'] for r in rows]
+        right.loglog(V, [r['mu'] for r in rows], 'o', color=colour, ms=5, label=label)
+        right.loglog(V, [r['mu_cracks'] for r in rows], '--', color=colour, lw=1)
+        right.loglog(V, [r['mu_bulk'] for r in rows], ':', color=colour, lw=1.2)
+        right.loglog(V, [r['mu_cracks'] + r['mu_bulk'] for r in rows], '-', color=colour, lw=0.8)
+    s_all = [r['s'] for rows in runs for r in rows]
+    grid = [min(s_all) * (max(s_all) / min(s_all)) ** (k / 200) for k in range(201)]
+    einf = runs[0][0]['einf_over_e0']
+    left.loglog(grid, [persson_brener_scaled(x, einf) for x in grid], 'k-', lw=1,
+                label='Persson & Brener, opening crack')
+    for level in (1, einf, 1 / einf):
+        left.axhline(level, color='0.7', lw=0.6, zorder=0)
+    left.set_xlabel(r'$s = V\tau_c/a_0$,  $a_0 = \Delta\gamma/(\pi\sigma_{max}^2)$')
+    left.set_ylabel(r'$G/\Delta\gamma$ of the relaxed outer contact')
+    left.set_title(r'edges as cracks: $\hat R = 10^{%d}$' % round(math.log10(runs[0][0]['R_hat'])),
+                   fontsize=10)
+    left.legend(fontsize=7, loc='center right')
+    right.plot([], [], 'k--', lw=1, label=r'edges as cracks, $(G_t - G_l)/F$')
+    right.plot([], [], 'k:', lw=1.2, label='bulk: Hunter at the Hertz load of the width')
+    right.plot([], [], 'k-', lw=0.8, label='their sum')
+    mu_min = min(r['mu'] for rows in runs for r in rows)
+    right.set_ylim(mu_min / 5, None)
+    right.set_xlabel(style.V_LABEL)
+    right.set_ylabel(r'$\mu$')
+    right.set_title('friction: full solution (points) and its parts', fontsize=10)
+    right.legend(fontsize=7, loc='upper left')
+    fig.tight_layout()
+    style.save(fig, path)
+
+
+def main(argv=None):
+    """scripts/edge_cracks FIGURE OUT_DIR [OUT_DIR ...]: the tables, the
+    collapse of the trailing edge's G over s, and the figure (FIGURE.png
+    and .pdf) of finished 2D runs, e.g. scripts/bench_graded's."""
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) < 2:
+        sys.exit(main.__doc__)
+    runs = sorted((analyse(out) for out in argv[1:]), key=lambda rows: rows[0]['muT'])
+    for rows in runs:
+        print_table(rows)
+    print_collapse(runs)
+    figure(runs, argv[0][:-4] if argv[0].endswith('.png') else argv[0])

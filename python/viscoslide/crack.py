@@ -111,15 +111,14 @@ def contact_edges(profile, R, threshold=1.2):
 def jkr_half_width(F, dgamma, R):
     """The JKR line contact's half-width under F (internal units, relaxed
     modulus): F = pi c^2/(4R) - sqrt(2 pi dgamma c), the larger root."""
-    low, high = (2 * dgamma * R * R / math.pi) ** (1 / 3), 1.0
-    while math.pi * high ** 2 / (4 * R) - math.sqrt(2 * math.pi * dgamma * high) < F:
+    load = lambda c: math.pi * c * c / (4 * R) - math.sqrt(2 * math.pi * dgamma * c)
+    # from the width at the pull-off, where the load is least
+    low = high = (2 * dgamma * R * R / math.pi) ** (1 / 3)
+    while load(high) < F:
         high *= 2
     for _ in range(200):
         c = 0.5 * (low + high)
-        if math.pi * c ** 2 / (4 * R) - math.sqrt(2 * math.pi * dgamma * c) < F:
-            low = c
-        else:
-            high = c
+        low, high = (c, high) if load(c) < F else (low, c)
     return 0.5 * (low + high)
 
 
@@ -225,10 +224,11 @@ def persson_brener_scaled(s, einf_over_e0):
 
 def figure(runs, path):
     """Left: G/dgamma of both edges over s, against Persson and Brener's.
-    Right: mu of the full solution against its parts, the edges as cracks
-    and the bulk's hysteresis (Hunter)."""
+    Middle: the contact width against JKR's. Right: mu of the full
+    solution against its parts, the edges as cracks and the bulk's
+    hysteresis (Hunter)."""
     plt = style.pyplot(style.CURVES, 'scripts/edge_cracks')
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.6))
+    fig, (left, width, right) = plt.subplots(1, 3, figsize=(15, 4.6))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     for k, (colour, rows) in enumerate(zip(colours, runs)):
         label = rf"$\mu_T = {rows[0]['muT']:g}$"
@@ -239,6 +239,8 @@ def figure(runs, path):
                     ms=size, zorder=3 + k, label=label + ', trailing edge')
         left.loglog(s, [r['G_lead'] for r in rows], 's', mfc='none', mew=1.2, color=colour,
                     ms=size, zorder=3 + k, label=label + ', leading edge')
+        width.semilogx(s, [100 * r['L_jkr'] for r in rows], 'o-', color=colour, ms=4, lw=0.8,
+                       label=label)
         V = [r['V_hat'] for r in rows]
         right.loglog(V, [r['mu'] for r in rows], 'o', color=colour, ms=5, label=label)
         right.loglog(V, [r['mu_cracks'] for r in rows], '--', color=colour, lw=1)
@@ -256,6 +258,11 @@ def figure(runs, path):
     left.set_title(r'edges as cracks: $\hat R = 10^{%d}$' % round(math.log10(runs[0][0]['R_hat'])),
                    fontsize=10)
     left.legend(fontsize=7, loc='center right')
+    width.axhline(0, color='0.7', lw=0.6, zorder=0)
+    width.set_xlabel(r'$s = V\tau_c/a_0$')
+    width.set_ylabel(r'$L/L_{JKR} - 1$ (%), JKR of the relaxed solid')
+    width.set_title('contact width: the slow limit', fontsize=10)
+    width.legend(fontsize=7, loc='upper left')
     right.plot([], [], 'k--', lw=1, label=r'edges as cracks, $(G_t - G_l)/F$')
     right.plot([], [], 'k:', lw=1.2, label='bulk: Hunter at the Hertz load of the width')
     right.plot([], [], 'k-', lw=0.8, label='their sum')

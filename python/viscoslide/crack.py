@@ -191,7 +191,7 @@ def print_collapse(runs):
     both), and the factor on s that brings Persson and Brener's G to the
     largest Tabor parameter's at G = 2, 4 and 8 dgamma."""
     top = max(runs, key=lambda rows: rows[0]['muT'])
-    narrow = lambda r: r['v_tau_c'] < 0.01 * r['L_hat'] * r['R_hat']
+    narrow = lambda r: r['v_tau_c'] < MODEL_REACH * r['L_hat'] * r['R_hat']
     for rows in runs:
         if rows is top:
             continue
@@ -215,6 +215,82 @@ def print_collapse(runs):
         if s_run:
             print(f"G = {level} dgamma: s = {s_run:.4g} (muT {top[0]['muT']:g}), "
                   f"Persson and Brener {low:.4g}: a factor {s_run / low:.3g}")
+
+
+# The edge model's premise: V tau_c below this fraction of the contact's
+# width (beyond, the contact's size shows in the edges' G: measured
+# below).
+MODEL_REACH = 0.002
+
+
+def edge_curves(rows):
+    """The edges' G/dgamma against s from a resolved run's analyse() rows,
+    within the model's reach: (s, G_trail, G_lead) ascending."""
+    return [(r['s'], r['G_trail'], r['G_lead']) for r in rows
+            if r['v_tau_c'] < MODEL_REACH * r['L_hat'] * r['R_hat']]
+
+
+def edge_model(F_hat, muT, R_hat, V_hat, curves, einf_over_e0=10., retardation=False):
+    """The cylinder's steady sliding with its edges as cracks whose G
+    follow `curves` (edge_curves of a resolved run; the same s = V tau_c/a0
+    for any Tabor parameter and R_hat): (mu, L_hat, the edges' share of
+    mu). Both edges move at V, so their G are known; the relaxed outer
+    contact then gives its half-width c from the load,
+        F = pi c^2/(4R) - sqrt(pi c/2) (sqrt(G_t) + sqrt(G_l)),
+    the friction of the edges (G_t - G_l)/F and the bulk's as
+    analyse() counts it. Below the curves' range the difference of the
+    G is linear in s (the response near rest), above it they are held at
+    the last point's (the glassy limits within a few percent)."""
+    dgamma = math.sqrt(muT ** 3 / R_hat)
+    R = R_hat
+    F = F_hat * (math.pi * dgamma ** 2 * R) ** (1 / 3)
+    v_tau_c = V_hat * (1 if retardation else einf_over_e0)
+    s = v_tau_c / cut_off(dgamma)
+    # Their difference (the friction) in log-log, as the power law it is
+    # near rest (linear in s), where it is a small difference of two G;
+    # their sum linearly in log s.
+    xs = [c[0] for c in curves]
+    clamp = min(max(s, xs[0]), xs[-1])
+    difference = math.exp(interpolate_log(clamp, xs, [math.log(c[1] - c[2]) for c in curves]))
+    if s < xs[0]:
+        difference *= s / xs[0]
+    total = interpolate_log(clamp, xs, [c[1] + c[2] for c in curves])
+    g_t, g_l = dgamma * (total + difference) / 2, dgamma * (total - difference) / 2
+    load = lambda c: math.pi * c * c / (4 * R) - math.sqrt(math.pi * c / 2) * \
+        (math.sqrt(g_t) + math.sqrt(g_l))
+    low = high = (dgamma * R * R / math.pi) ** (1 / 3)
+    while load(high) < F:
+        high *= 2
+    for _ in range(200):
+        c = 0.5 * (low + high)
+        low, high = (c, high) if load(c) < F else (low, c)
+    hertz = math.pi * low * low / (4 * R)
+    edges = (g_t - g_l) / F
+    bulk = hunter(hertz, R, 1.0, einf_over_e0, v_tau_c)['mu'] * hertz / F
+    return edges + bulk, 2 * low / R, edges / (edges + bulk)
+
+
+def print_edge_model(curves_run, runs):
+    """The edge model with the curves of curves_run against the other
+    resolved runs: the largest errors of mu and L_hat within the model's
+    reach and at all speeds."""
+    curves = edge_curves(curves_run)
+    for rows in runs:
+        if rows is curves_run:
+            continue
+        errors = []
+        for r in rows:
+            mu, L, _ = edge_model(1.0, r['muT'], r['R_hat'], r['V_hat'], curves,
+                                  r['einf_over_e0'])
+            inside = r['v_tau_c'] < MODEL_REACH * r['L_hat'] * r['R_hat']
+            errors.append((inside, abs(mu / r['mu'] - 1), abs(L / r['L_hat'] - 1)))
+        for what, chosen in ((f'V tau_c < {100 * MODEL_REACH:g} % of the width',
+                              [e for e in errors if e[0]]),
+                             ('all speeds', errors)):
+            print(f"edge model (the curves of muT {curves_run[0]['muT']:g}) at muT "
+                  f"{rows[0]['muT']:g}, {what} ({len(chosen)}): mu within "
+                  f"{100 * max(e[1] for e in chosen):.2f} %, L_hat within "
+                  f"{100 * max(e[2] for e in chosen):.3f} %")
 
 
 def persson_brener_scaled(s, einf_over_e0):
@@ -276,15 +352,35 @@ def figure(runs, path):
     style.save(fig, path)
 
 
+def print_prediction(curves_run, muT, R_hat, speeds):
+    """The edge model's curve (F_hat 1) at a Tabor parameter and R_hat
+    beyond the resolved runs, with the curves of curves_run."""
+    curves = edge_curves(curves_run)
+    print(f"edge model (the curves of muT {curves_run[0]['muT']:g}): muT {muT:g}, "
+          f"R_hat {R_hat:g}, F_hat 1")
+    print('V_hat      mu           L_hat        edges\' share')
+    for V in speeds:
+        mu, L, share = edge_model(1.0, muT, R_hat, V, curves, curves_run[0]['einf_over_e0'])
+        print(f'{V:<10.4g} {mu:.5e}  {L:.5e}  {100 * share:6.2f} %')
+
+
 def main(argv=None):
-    """scripts/edge_cracks FIGURE OUT_DIR [OUT_DIR ...]: the tables, the
-    collapse of the trailing edge's G over s, and the figure (FIGURE.png
-    and .pdf) of finished 2D runs, e.g. scripts/bench_graded's."""
+    """scripts/edge_cracks FIGURE OUT_DIR [OUT_DIR ...] [--predict muT:R_hat ...]:
+    the tables, the collapse of the trailing edge's G over s, the edge
+    model with the largest Tabor parameter's curves against the other runs
+    (and its curves at the muT:R_hat given, 0.01 to 1000) and the figure
+    (FIGURE.png and .pdf) of finished 2D runs, e.g. scripts/bench_graded's."""
     argv = sys.argv[1:] if argv is None else argv
+    predict = argv[argv.index('--predict') + 1:] if '--predict' in argv else []
+    argv = argv[:argv.index('--predict')] if predict else argv
     if len(argv) < 2:
         sys.exit(main.__doc__)
     runs = sorted((analyse(out) for out in argv[1:]), key=lambda rows: rows[0]['muT'])
     for rows in runs:
         print_table(rows)
     print_collapse(runs)
+    print_edge_model(runs[-1], runs)
+    for case in predict:
+        muT, R_hat = map(float, case.split(':'))
+        print_prediction(runs[-1], muT, R_hat, [10 ** (k / 4 - 2) for k in range(21)])
     figure(runs, argv[0][:-4] if argv[0].endswith('.png') else argv[0])

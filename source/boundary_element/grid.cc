@@ -205,4 +205,18 @@ namespace viscoslide
       }
     return 0.5 * (lo + hi);
   }
+
+
+  double
+  sphere_jkr_radius(const double P,
+                    const double dgamma,
+                    const double R,
+                    const double E)
+  {
+    const double J    = 3 * M_PI * dgamma * R;
+    const double root = 2 * J * P + J * J;
+    if (root < 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    return std::cbrt(3 * R / (4 * E) * (P + J + std::sqrt(root)));
+  }
 } // namespace viscoslide

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <viscoslide/boundary_element/nested_grid.h>
 #include <viscoslide/boundary_element/uniform_grid.h>
+#include <viscoslide/case_setup/common.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace viscoslide
 {
@@ -72,6 +74,7 @@ namespace viscoslide
   void
   NestedGrid::make(const std::vector<bool> &band, SurfaceState &state)
   {
+    require_fits(band);
     std::unique_ptr<NestedLayout> old = std::move(layout);
     layout                            = std::make_unique<NestedLayout>(shape,
                                             dx,
@@ -110,6 +113,26 @@ namespace viscoslide
       << std::count(band.begin(), band.end(), true) << " of them divided "
       << layout->r << " x " << layout->r;
     out << s.str() << std::endl;
+  }
+
+
+  void
+  NestedGrid::require_fits(const std::vector<bool> &band) const
+  {
+    const unsigned int r = prm.boundary_element.refinement;
+    const double       points =
+      band.size() + std::count(band.begin(), band.end(), true) * (r * r - 1.);
+    const double gigabytes = plane_grid_bytes_per_point * points / 1e9;
+    const double available = CaseSetup::internal::this_machine_memory_gb();
+    if (gigabytes <= 0.8 * available)
+      return;
+    std::ostringstream s;
+    s << "the nested boundary-element grid about the contact's edge at V_hat "
+      << speed * scales.tau_ref / scales.eps << " needs " << points
+      << " points, about " << gigabytes << " GB; this machine has " << available
+      << " GB: lower 'Boundary element/Refinement' or 'Boundary "
+         "element/Band width', or raise 'Boundary element/Grid spacing'";
+    throw std::runtime_error(s.str());
   }
 
 
@@ -180,18 +203,28 @@ namespace viscoslide
       int(std::ceil(prm.boundary_element.band_width * scales.eps / dx - 1e-9)) +
       spare;
     // No band cell within the compliance's margin of the window's border
-    // (nested_compliance.h): no traction reaches there.
+    // (nested_compliance.h): a band that would reach there is refused,
+    // the window being too small for the contact.
     const int         m = NestedCompliance::margin;
     std::vector<bool> band(core.size(), false);
     for (int iy = 0; iy < n_y; ++iy)
       for (int ix = 0; ix < n_x; ++ix)
         if (core[iy * n_x + ix])
-          for (int y = std::max(iy - w, m); y <= std::min(iy + w, n_y - 1 - m);
-               ++y)
-            for (int x = std::max(ix - w, m);
-                 x <= std::min(ix + w, n_x - 1 - m);
-                 ++x)
-              band[y * n_x + x] = true;
+          {
+            if (std::min({ix, iy, n_x - 1 - ix, n_y - 1 - iy}) < m + w)
+              throw std::runtime_error(
+                "the band of the nested boundary-element grid about the "
+                "contact's edge (the adhesive zone widened by 'Boundary "
+                "element/Band width') reaches within " +
+                std::to_string(m) +
+                " cells of the window's border, where no band cell may be "
+                "(the near field's margin): raise 'Geometry/Domain width' "
+                "and 'Geometry/Domain length', or lower 'Boundary "
+                "element/Band width'");
+            for (int y = iy - w; y <= iy + w; ++y)
+              for (int x = ix - w; x <= ix + w; ++x)
+                band[y * n_x + x] = true;
+          }
     return band;
   }
 

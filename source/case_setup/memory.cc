@@ -124,11 +124,10 @@ namespace viscoslide
         double              &a = size.radius;
         if (p.loading.has_target_load())
           {
-            const double F = std::max(p.loading.target_load, 0.) * s.force,
-                         J = p.adhesion.adhesive() ? 3 * M_PI * s.dgamma * s.R
-                                                   : 0.;
-            a              = std::cbrt(3 * s.R / (4 * E) *
-                          (F + J + std::sqrt(2 * J * F + J * J)));
+            a = sphere_jkr_radius(std::max(p.loading.target_load, 0.) * s.force,
+                                  p.adhesion.adhesive() ? s.dgamma : 0.,
+                                  s.R,
+                                  E);
           }
         else
           a = std::sqrt(s.R * std::max(p.loading.final_approach, 0.) * s.eps);
@@ -176,10 +175,34 @@ namespace viscoslide
       }
 
 
+      // The points the nested grid's band adds at least (r^2 - 1 per band
+      // cell): a ring of cells about the JKR contact of the relaxed solid
+      // at the Target load, as wide as the Band width on either side of
+      // one cell with one cell to spare on each (nested_grid.cc); the band
+      // the solution asks for is wider where the adhesive zone is (the
+      // nested grid checks each band it makes).
+      double
+      nested_band_points(const AllParameters &p, const double spacing)
+      {
+        if (p.boundary_element.grid != GridKind::nested ||
+            !p.loading.has_target_load())
+          return 0;
+        const Scales s(p);
+        const double a =
+          sphere_jkr_radius(p.loading.target_load * s.force, s.dgamma, s.R) /
+          s.eps;
+        if (!std::isfinite(a))
+          return 0;
+        const double across =
+          3 + 2 * std::ceil(p.boundary_element.band_width / spacing);
+        const unsigned int r = p.boundary_element.refinement;
+        return 2 * M_PI * a / spacing * across * (r * r - 1.);
+      }
+
+
       // A plane grid of the boundary elements must fit in memory at the
       // fastest speed (whose wake sets the period along x): refused before
-      // anything is written, with the entries to change. The solver checks
-      // each grid again against the memory it finds.
+      // anything is written, with the entries to change.
       void
       check_plane_grid_fits(const AllParameters &p,
                             const double         spacing,
@@ -194,20 +217,30 @@ namespace viscoslide
             : std::max(width,
                        p.boundary_element.wake_periods * fastest_wake(p));
         const double points =
-          (length / spacing) * (p.geometry.length() / spacing);
-        // GMRES keeps up to 102 vectors of the grid, the rest about 40; four
-        // fifths of this machine's memory may go to them.
-        const double       gigabytes          = 150. * 8. * points / 1e9;
-        const double       max_grid_gigabytes = 0.8 * this_machine_memory_gb();
+          (length / spacing) * (p.geometry.length() / spacing) +
+          nested_band_points(p, spacing);
+        // Four fifths of this machine's memory may go to the grid.
+        const double gigabytes = plane_grid_bytes_per_point * points / 1e9;
+        const double max_grid_gigabytes = 0.8 * this_machine_memory_gb();
         std::ostringstream message;
         message << "the 3D boundary-element grid of " << points << " points ("
                 << length << " x " << p.geometry.length() << " eps at "
-                << "spacing " << spacing << " eps) needs about " << gigabytes
-                << " GB, this machine has " << max_grid_gigabytes / 0.8
-                << " GB: raise 'Boundary element/Grid spacing' "
-                   "or lower 'Geometry/Domain width', 'Geometry/Domain "
-                   "length', 'Boundary element/Period' or 'Boundary "
-                   "element/Wake periods'";
+                << "spacing " << spacing << " eps"
+                << (p.boundary_element.grid == GridKind::nested
+                      ? ", with its band about the contact's edge"
+                      : "")
+                << ") needs about " << gigabytes << " GB, this machine has "
+                << max_grid_gigabytes / 0.8
+                << " GB: raise 'Boundary element/Grid spacing' or lower "
+                << (p.geometry.substrate == Substrate::half_plane
+                      ? "'Geometry/Domain width' or 'Geometry/Domain length'"
+                      : "'Geometry/Domain width', 'Geometry/Domain length', "
+                        "'Boundary element/Period' or 'Boundary "
+                        "element/Wake periods'")
+                << (p.boundary_element.grid == GridKind::nested
+                      ? ", 'Boundary element/Refinement' or 'Boundary "
+                        "element/Band width'"
+                      : "");
         require(gigabytes <= max_grid_gigabytes, message.str());
       }
 

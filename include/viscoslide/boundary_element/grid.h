@@ -73,6 +73,20 @@ namespace viscoslide
   // force, the minimum of P(a).
   double
   cylinder_jkr_half_width(double P, double dgamma, double R);
+
+  // The radius a of the JKR contact of a paraboloid of radius R on a solid
+  // of plane-strain modulus E under the load P (compressive > 0), on the
+  // stable branch (Johnson, Kendall and Roberts 1971), with J = 3 pi dgamma R:
+  //     a^3 = (3R/(4E)) (P + J + sqrt(2 J P + J^2));
+  // Hertz's for dgamma = 0, NaN below the pull-off force -J/2.
+  double
+  sphere_jkr_radius(double P, double dgamma, double R, double E = 1.);
+
+  // The memory of a 3D grid of the boundary elements per point: GMRES
+  // keeps up to 102 vectors of the grid, the rest about 40 (measured on
+  // the uniform and nested grids: 2.4 and 1.4 kB per point, the window's
+  // FFT buffers included, doc/boundary_element.md).
+  constexpr double plane_grid_bytes_per_point = 150. * 8.;
 } // namespace viscoslide
 
 #endif

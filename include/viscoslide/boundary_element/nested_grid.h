@@ -95,6 +95,10 @@ namespace viscoslide
     // The grid with band `band`, the state carried over.
     void
     make(const std::vector<bool> &band, SurfaceState &state);
+    // Refuses a band whose grid will not fit in this machine's memory,
+    // naming the entries that shrink it.
+    void
+    require_fits(const std::vector<bool> &band) const;
     // The cells the traction asks to be refined (the zone and the edge),
     // and those widened by the band width and `spare` cells more.
     std::vector<bool>

@@ -354,14 +354,18 @@ def figure(runs, path):
 
 def print_prediction(curves_run, muT, R_hat, speeds):
     """The edge model's curve (F_hat 1) at a Tabor parameter and R_hat
-    beyond the resolved runs, with the curves of curves_run."""
+    beyond the resolved runs, with the curves of curves_run (a speed
+    whose V tau_c is beyond MODEL_REACH of the width is marked; the time
+    constant the relaxation time, as in the runs)."""
     curves = edge_curves(curves_run)
     print(f"edge model (the curves of muT {curves_run[0]['muT']:g}): muT {muT:g}, "
           f"R_hat {R_hat:g}, F_hat 1")
-    print('V_hat      mu           L_hat        edges\' share')
+    print('V_hat      mu           L_hat        edges\' share  V tau_c within the reach')
+    ratio = curves_run[0]['einf_over_e0']
     for V in speeds:
-        mu, L, share = edge_model(1.0, muT, R_hat, V, curves, curves_run[0]['einf_over_e0'])
-        print(f'{V:<10.4g} {mu:.5e}  {L:.5e}  {100 * share:6.2f} %')
+        mu, L, share = edge_model(1.0, muT, R_hat, V, curves, ratio)
+        inside = 'yes' if V * ratio < MODEL_REACH * L * R_hat else 'no'
+        print(f'{V:<10.4g} {mu:.5e}  {L:.5e}  {100 * share:6.2f} %        {inside}')
 
 
 def main(argv=None):

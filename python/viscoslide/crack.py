@@ -343,11 +343,12 @@ def figure(runs, path):
     right.plot([], [], 'k:', lw=1.2, label='bulk: Hunter at the Hertz load of the width')
     right.plot([], [], 'k-', lw=0.8, label='their sum')
     mu_min = min(r['mu'] for rows in runs for r in rows)
-    right.set_ylim(mu_min / 5, None)
+    # a decade above the curves for the legend
+    right.set_ylim(mu_min / 5, 10 * max(r['mu'] for rows in runs for r in rows))
     right.set_xlabel(style.V_LABEL)
     right.set_ylabel(r'$\mu$')
     right.set_title('friction: full solution (points) and its parts', fontsize=10)
-    right.legend(fontsize=7, loc='upper left')
+    right.legend(fontsize=7, loc='upper left', ncol=2)
     fig.tight_layout()
     style.save(fig, path)
 

@@ -69,12 +69,21 @@ namespace viscoslide
         w[j] = s[j + 1] - s[j];
         x[j] = 0.5 * (s[j] + s[j + 1]);
       }
-    const double log_depth = std::log(depth);
+    // Column by column, as G is stored, each boundary's primitive at every
+    // point once (a logarithm per entry).
+    const double        log_depth = std::log(depth);
+    std::vector<double> left(n), right(n);
     for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        G(i, j) = 2. / M_PI *
-                  (w[j] * log_depth - primitive(x[i] - s[j]) +
-                   primitive(x[i] - s[j + 1]));
+      left[i] = primitive(x[i] - s[0]);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            right[i] = primitive(x[i] - s[j + 1]);
+            G(i, j)  = 2. / M_PI * (w[j] * log_depth - left[i] + right[i]);
+          }
+        std::swap(left, right);
+      }
   }
 
 
@@ -139,7 +148,7 @@ namespace viscoslide
     // C = G Q + sum_r wake_r (x) E0_r, Q the effective-traction map (its
     // column k the smeared unit traction of cell k), E0_r the row that
     // gives the edge value of retardation r.
-    FullMatrix<double>               Q(n, n);
+    LAPACKFullMatrix<double>         Q(n, n);
     std::vector<std::vector<double>> edge_row(creep.retardations.size(),
                                               std::vector<double>(n));
     Vector<double>                   unit(n), column;
@@ -189,7 +198,9 @@ namespace viscoslide
     if (!formed)
       form_matrix();
     FullMatrix<double> b(m, m);
-    b.fill(C, 0, 0, first, first);
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = 0; j < m; ++j)
+        b(i, j) = C(first + i, first + j);
     return b;
   }
 

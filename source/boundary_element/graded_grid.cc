@@ -167,13 +167,20 @@ namespace viscoslide
                         const Vector<double>            &gap,
                         SurfaceState                    &state)
   {
+    // A grid moved with its edges keeps its cells, and the window
+    // preconditioner's factors of the grid before stay a preconditioner
+    // (grid.apply() is the present compliance; the factors are renewed
+    // when GMRES needs too many iterations with them): with the edges as
+    // unknowns the grid moves at every Newton step, and a factorization
+    // at each (the compliance formed, n^3, and factorized) was half the
+    // time of a curve. A grid of other cells needs new factors.
+    if (new_boundaries.size() != cells.boundaries.size())
+      window->reset();
     cells.boundaries     = new_boundaries;
     cells.edges          = edges;
     const auto        &b = cells.boundaries;
     const unsigned int n = b.size() - 1;
-    // The window preconditioner refers to the compliance it was made with.
-    window->reset();
-    compliance = std::make_unique<GradedCompliance>(material,
+    compliance           = std::make_unique<GradedCompliance>(material,
                                                     prm.material.poisson_ratio,
                                                     b,
                                                     depth);

@@ -25,6 +25,7 @@
 #define viscoslide_boundary_element_graded_compliance_h
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <viscoslide/boundary_element/compliance.h>
@@ -76,14 +77,16 @@ namespace viscoslide
     std::vector<double>       x, w;
     const Creep               creep;
     double                    V = -1;
-    FullMatrix<double>        G;
+    // BLAS's matrix-vector products (deal.II's FullMatrix loops were a
+    // fifth of a curve's time).
+    LAPACKFullMatrix<double> G;
     // Per retardation at the present speed, the decay over each cell and
     // the wake's displacement c_r T_r at the cells (empty at rest).
     std::vector<std::vector<CellDecay>> decay;
     std::vector<std::vector<double>>    wake;
     // C, once formed.
-    mutable FullMatrix<double> C;
-    mutable bool               formed = false;
+    mutable LAPACKFullMatrix<double> C;
+    mutable bool                     formed = false;
   };
 } // namespace viscoslide
 

@@ -185,12 +185,17 @@ def interpolate_log(x, xs, ys):
     return None
 
 
+def case(rows):
+    """A run's Tabor parameter and R_hat, for the printed lines."""
+    return f"muT {rows[0]['muT']:g}, R_hat {rows[0]['R_hat']:g}"
+
+
 def print_collapse(runs):
-    """Each run's trailing G against the largest Tabor parameter's at the
-    same s (where V tau_c is below a hundredth of the contact's width in
-    both), and the factor on s that brings Persson and Brener's G to the
+    """Each run's trailing G against the last run's (runs sorted by muT
+    and R_hat) at the same s, within the edge model's reach in both, and
+    the factor on s that brings Persson and Brener's G to the
     largest Tabor parameter's at G = 2, 4 and 8 dgamma."""
-    top = max(runs, key=lambda rows: rows[0]['muT'])
+    top = runs[-1]
     narrow = lambda r: r['v_tau_c'] < MODEL_REACH * r['L_hat'] * r['R_hat']
     for rows in runs:
         if rows is top:
@@ -201,7 +206,7 @@ def print_collapse(runs):
             if g is not None and narrow(r):
                 gaps.append((r['s'], r['G_trail'] / g - 1))
         worst = max(gaps, key=lambda x: abs(x[1]))
-        print(f"G_trail at muT {rows[0]['muT']:g} against muT {top[0]['muT']:g} at the same s, "
+        print(f"G_trail at {case(rows)} against {case(top)} at the same s, "
               f"{len(gaps)} speeds: within {100 * abs(worst[1]):.2f} % (at s = {worst[0]:.3g})")
     einf = top[0]['einf_over_e0']
     for level in (2, 4, 8):
@@ -287,8 +292,8 @@ def print_edge_model(curves_run, runs):
         for what, chosen in ((f'V tau_c < {100 * MODEL_REACH:g} % of the width',
                               [e for e in errors if e[0]]),
                              ('all speeds', errors)):
-            print(f"edge model (the curves of muT {curves_run[0]['muT']:g}) at muT "
-                  f"{rows[0]['muT']:g}, {what} ({len(chosen)}): mu within "
+            print(f"edge model (the curves of {case(curves_run)}) at {case(rows)}, "
+                  f"{what} ({len(chosen)}): mu within "
                   f"{100 * max(e[1] for e in chosen):.2f} %, L_hat within "
                   f"{100 * max(e[2] for e in chosen):.3f} %")
 
@@ -306,8 +311,10 @@ def figure(runs, path):
     plt = style.pyplot(style.CURVES, 'scripts/edge_cracks')
     fig, (left, width, right) = plt.subplots(1, 3, figsize=(15, 4.6))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
+    one_R = len({rows[0]['R_hat'] for rows in runs}) == 1
     for k, (colour, rows) in enumerate(zip(colours, runs)):
-        label = rf"$\mu_T = {rows[0]['muT']:g}$"
+        label = rf"$\mu_T = {rows[0]['muT']:g}$" + \
+            ('' if one_R else rf", $\hat R = {style.fmt(rows[0]['R_hat'])}$")
         s = [r['s'] for r in rows]
         # the smaller Tabor parameters smaller and on top: the points meet
         size = 4 + 2.5 * (len(runs) - 1 - k)
@@ -331,8 +338,8 @@ def figure(runs, path):
         left.axhline(level, color='0.7', lw=0.6, zorder=0)
     left.set_xlabel(r'$s = V\tau_c/a_0$,  $a_0 = \Delta\gamma/(\pi\sigma_{max}^2)$')
     left.set_ylabel(r'$G/\Delta\gamma$ of the relaxed outer contact')
-    left.set_title(r'edges as cracks: $\hat R = 10^{%d}$' % round(math.log10(runs[0][0]['R_hat'])),
-                   fontsize=10)
+    left.set_title('edges as cracks' + (rf": $\hat R = {style.fmt(runs[0][0]['R_hat'])}$"
+                                        if one_R else ''), fontsize=10)
     left.legend(fontsize=7, loc='center right')
     width.axhline(0, color='0.7', lw=0.6, zorder=0)
     width.set_xlabel(r'$s = V\tau_c/a_0$')
@@ -380,7 +387,9 @@ def main(argv=None):
     argv = argv[:argv.index('--predict')] if predict else argv
     if len(argv) < 2:
         sys.exit(main.__doc__)
-    runs = sorted((analyse(out) for out in argv[1:]), key=lambda rows: rows[0]['muT'])
+    # the curves of the largest Tabor parameter (and R_hat) serve the others
+    runs = sorted((analyse(out) for out in argv[1:]),
+                  key=lambda rows: (rows[0]['muT'], rows[0]['R_hat']))
     for rows in runs:
         print_table(rows)
     print_collapse(runs)

@@ -44,10 +44,15 @@ namespace viscoslide
       {
         if (p.sliding.solver != SlidingSolver::boundary_element)
           return {p.mesh.finest_cell, "'Mesh/Finest surface cell'"};
-        return {p.boundary_element.grid_spacing > 0
-                  ? p.boundary_element.grid_spacing
-                  : p.mesh.finest_cell / 2,
-                "'Boundary element/Grid spacing'"};
+        const double spacing = p.boundary_element.grid_spacing > 0
+                                 ? p.boundary_element.grid_spacing
+                                 : p.mesh.finest_cell / 2;
+        // The nested grid's band, along the contact's edge, is the finest.
+        if (p.boundary_element.grid == GridKind::nested)
+          return {spacing / p.boundary_element.refinement,
+                  "'Boundary element/Grid spacing' over 'Boundary "
+                  "element/Refinement'"};
+        return {spacing, "'Boundary element/Grid spacing'"};
       }
 
       // The 3D finite elements: their size before the mesh is built, and
@@ -115,6 +120,14 @@ namespace viscoslide
                   "boundary-element with 'Boundary element/Grid' = graded "
                   "resolves the zone at any R over eps, doc/"
                   "boundary_element.md)";
+        if (p.geometry.dimension == 3 &&
+            p.geometry.substrate == Substrate::half_plane &&
+            p.sliding.solver == SlidingSolver::boundary_element &&
+            p.boundary_element.grid == GridKind::uniform)
+          note << " ('Boundary element/Grid' = nested divides the cells "
+                  "of a band along the contact's edge by 'Boundary "
+                  "element/Refinement', doc/boundary_element.md, Nested "
+                  "grid)";
         p.notes.push_back(note.str());
       }
 
@@ -133,7 +146,10 @@ namespace viscoslide
           num(graded_grid_measured_reach) +
           " (doc/boundary_element.md, Reach at the Tabor parameters of real "
           "bodies): it may take minutes, or stop with a message that names "
-          "the step where Newton's method did not converge");
+          "the step where Newton's method did not converge. The edge model "
+          "of scripts/edge_cracks (--predict) gives the curve from the "
+          "contact edges' energy release rates measured at Tabor parameter "
+          "1000 (doc/boundary_element.md, The edges as cracks)");
       }
 
       // The transient's step: an adhesive edge that snaps within one step

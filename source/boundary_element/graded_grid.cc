@@ -167,13 +167,14 @@ namespace viscoslide
                         const Vector<double>            &gap,
                         SurfaceState                    &state)
   {
-    // A grid moved with its edges keeps its cells, and the window
-    // preconditioner's factors of the grid before stay a preconditioner
-    // (grid.apply() is the present compliance; the factors are renewed
-    // when GMRES needs too many iterations with them): with the edges as
-    // unknowns the grid moves at every Newton step, and a factorization
-    // at each (the compliance formed, n^3, and factorized) was half the
-    // time of a curve. A grid of other cells needs new factors.
+    // A grid moved with its edges, or made anew with as many cells, keeps
+    // the window preconditioner's factors of the grid before: they stay a
+    // preconditioner (grid.apply() is the present compliance; the factors
+    // are renewed when the stiff points leave their window or GMRES needs
+    // too many iterations with them). With the edges as unknowns the grid
+    // moves at every Newton step, and a factorization at each (the
+    // compliance formed, n^3, and factorized) was half the time of a
+    // curve. Another number of cells needs new factors.
     if (new_boundaries.size() != cells.boundaries.size())
       window->reset();
     cells.boundaries     = new_boundaries;

@@ -87,12 +87,10 @@ def persson_brener(v_tau_c, dgamma, einf_over_e0):
         dgamma/G = 1 - (1 - E0/Einf) (sqrt(1 + b^2) - 1)/b,
     from 1 at rest to E0/Einf when the zone is passed in much less than
     tau_c. Solved for G by bisection (the right side rises with G)."""
-    sigma = 16 * dgamma / (9 * math.sqrt(3))
     loss = 1 - 1 / einf_over_e0
 
     def excess(g):
-        a = g * dgamma / (math.pi * sigma ** 2)
-        b = 2 * math.pi * v_tau_c / a
+        b = 2 * math.pi * v_tau_c / (g * cut_off(dgamma))
         return 1 / g - (1 - loss * (math.sqrt(1 + b * b) - 1) / b)
 
     low, high = 1.0, einf_over_e0
@@ -105,7 +103,7 @@ def persson_brener(v_tau_c, dgamma, einf_over_e0):
     return math.sqrt(low * high)
 
 
-def contact_edges(profile, R, threshold=1.2):
+def contact_edges(profile, R, threshold):
     """The contact's trailing and leading x (internal units) in a surface
     profile (x_over_R, gap_over_eps): where the gap crosses `threshold`
     eps, interpolated linearly, outermost crossings."""
@@ -158,6 +156,7 @@ def analyse(out):
     R = float(p['Adhesion']['R over eps']['value'])
     ratio = 1 / float(p['Material']['E0 over Einf']['value'])
     retardation = p['Material']['Time constant']['value'] == 'retardation'
+    threshold = float(p['Adhesion']['Contact gap threshold']['value'])
     dgamma = math.sqrt(muT ** 3 / R)
     unit = (math.pi * dgamma ** 2 * R) ** (1 / 3)
     result = []
@@ -165,7 +164,7 @@ def analyse(out):
         v_tau_c = r['V_hat'] * (1 if retardation else ratio)
         F = r['F_n_hat'] * unit
         profile = tables.read(os.path.join(out, f'surface_profile_steady_{k:02d}.csv'))
-        trail, lead = contact_edges(profile, R)
+        trail, lead = contact_edges(profile, R, threshold)
         g_trail, g_lead = edge_energy_release(F, trail, lead, R)
         hertz = math.pi * (lead - trail) ** 2 / (16 * R)
         result.append(dict(

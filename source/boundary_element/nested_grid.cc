@@ -123,14 +123,15 @@ namespace viscoslide
     const double       points =
       band.size() + std::count(band.begin(), band.end(), true) * (r * r - 1.);
     const double gigabytes = plane_grid_bytes_per_point * points / 1e9;
-    const double available = CaseSetup::internal::this_machine_memory_gb();
-    if (gigabytes <= 0.8 * available)
+    const double limit     = CaseSetup::internal::plane_grid_memory_limit_gb();
+    if (gigabytes <= limit)
       return;
     std::ostringstream s;
     s << "the nested boundary-element grid about the contact's edge at V_hat "
       << speed * scales.tau_ref / scales.eps << " needs " << points
-      << " points, about " << gigabytes << " GB; this machine has " << available
-      << " GB: lower 'Boundary element/Refinement' or 'Boundary "
+      << " points, about " << gigabytes << " GB, more than the " << limit
+      << " GB a grid may take on this machine: lower 'Boundary "
+         "element/Refinement' or 'Boundary "
          "element/Band width', or raise 'Boundary element/Grid spacing'";
     throw std::runtime_error(s.str());
   }

@@ -95,6 +95,12 @@ namespace viscoslide
                double(sysconf(_SC_PAGE_SIZE)) / 1e9;
       }
 
+      double
+      plane_grid_memory_limit_gb()
+      {
+        return 0.8 * this_machine_memory_gb();
+      }
+
       // The memory of the machines this run has, in GB: this machine's times
       // the nodes the processes are spread over, read from the environment
       // of Open MPI's mpirun or of Slurm (so that no collective call is
@@ -219,9 +225,8 @@ namespace viscoslide
         const double points =
           (length / spacing) * (p.geometry.length() / spacing) +
           nested_band_points(p, spacing);
-        // Four fifths of this machine's memory may go to the grid.
         const double gigabytes = plane_grid_bytes_per_point * points / 1e9;
-        const double max_grid_gigabytes = 0.8 * this_machine_memory_gb();
+        const double max_grid_gigabytes = plane_grid_memory_limit_gb();
         std::ostringstream message;
         message << "the 3D boundary-element grid of " << points << " points ("
                 << length << " x " << p.geometry.length() << " eps at "
@@ -230,7 +235,7 @@ namespace viscoslide
                       ? ", with its band about the contact's edge"
                       : "")
                 << ") needs about " << gigabytes << " GB, this machine has "
-                << max_grid_gigabytes / 0.8
+                << this_machine_memory_gb()
                 << " GB: raise 'Boundary element/Grid spacing' or lower "
                 << (p.geometry.substrate == Substrate::half_plane
                       ? "'Geometry/Domain width' or 'Geometry/Domain length'"

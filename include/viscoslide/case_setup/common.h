@@ -65,6 +65,11 @@ namespace viscoslide
       this_machine_memory_gb();
       double
       machine_memory_gb();
+      // The memory a 3D grid of the boundary elements may take, in GB:
+      // four fifths of this machine's (checked before the run and by the
+      // nested grid at each band it makes). [memory.cc]
+      double
+      plane_grid_memory_limit_gb();
 
       // The size of the 3D finite elements with the mesh about the largest
       // contact of the case, the relaxed one at the Target load (JKR's

@@ -23,18 +23,18 @@ namespace viscoslide
     // On a grid made for this step (its predictor) the state is the grid's.
     const bool secant = ratio != 0. && std::abs(ratio) <= 2;
     if (secant && control.force_controlled)
-      state.delta += ratio * (at_state.delta - before.delta);
-    const auto &h = grid->at().h;
+      state.set_approach(state.delta + ratio * (at_state.delta - before.delta));
     for (unsigned int j = 0;
-         generation_at == grid->generation() && j < state.u.size();
+         generation_at == grid->generation() && j < state.gap.size();
          ++j)
       {
+        // u moved along its secant, u_at - u_before; the indenter's height
+        // cancels from it.
         if (secant)
-          state.u[j] += ratio * (at_state.u[j] - before.u[j]);
-        const double g_at = scales.eps + h[j] - at_state.delta - at_state.u[j];
-        state.u[j]        = std::min(state.u[j],
-                              scales.eps + h[j] - state.delta -
-                                std::min(g_at, scales.eps));
+          state.gap[j] -= ratio * ((before.delta - at_state.delta) +
+                                   (before.gap[j] - at_state.gap[j]));
+        state.gap[j] =
+          std::max(state.gap[j], std::min(at_state.gap[j], scales.eps));
       }
   }
 
@@ -75,7 +75,7 @@ namespace viscoslide
                 generation_at,
                 before.state,
                 before.valid && before.generation == grid->generation() &&
-                    before.state.u.size() == state.u.size()
+                    before.state.gap.size() == state.gap.size()
                   ? ratio
                   : 0.);
         if (solve(!moving) >= 0)
@@ -221,16 +221,21 @@ namespace viscoslide
     const double                 target,
     const std::function<void()> &on_converged)
   {
-    double &parameter =
-      control.force_controlled ? control.target_force : state.delta;
-    const double distance = std::abs(target - parameter);
+    const bool   force    = control.force_controlled;
+    const double from     = force ? control.target_force : state.delta;
+    const double distance = std::abs(target - from);
     step_before           = {};
     return follow(
-      parameter,
+      from,
       target,
       distance / 10,
       distance * 1e-4,
-      [&parameter](const double v) { parameter = v; },
+      [this, force](const double v) {
+        if (force)
+          control.target_force = v;
+        else
+          state.set_approach(v);
+      },
       on_converged);
   }
 
@@ -248,7 +253,7 @@ namespace viscoslide
           to * scales.eps,
           prm.loading.increment * scales.eps,
           prm.loading.minimum_increment * scales.eps,
-          [this](const double d) { state.delta = d; },
+          [this](const double d) { state.set_approach(d); },
           report,
           done))
       throw std::runtime_error(

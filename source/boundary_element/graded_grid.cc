@@ -126,12 +126,10 @@ namespace viscoslide
                    const std::function<double(double)> &shift)
   {
     // The state carried over as its gaps; the first grid from u = 0.
-    const auto         &x = points.x;
-    std::vector<double> old_gap(x.size());
-    for (unsigned int j = 0; j < x.size(); ++j)
-      old_gap[j] = scales.eps + points.h[j] - state.delta - state.u[j];
-    const unsigned int n = new_boundaries.size() - 1;
-    Vector<double>     gap(n);
+    const auto          &x       = points.x;
+    const Vector<double> old_gap = state.gap;
+    const unsigned int   n       = new_boundaries.size() - 1;
+    Vector<double>       gap(n);
     for (unsigned int j = 0; j < n; ++j)
       {
         // Linear between the old points, beyond them the nearer end's.
@@ -191,7 +189,7 @@ namespace viscoslide
     points.h.resize(n);
     points.slope.resize(n);
     points.area.resize(n);
-    state.u.reinit(n);
+    state.gap = gap;
     for (unsigned int j = 0; j < n; ++j)
       {
         const double x  = 0.5 * (b[j] + b[j + 1]);
@@ -199,7 +197,6 @@ namespace viscoslide
         points.area[j]  = b[j + 1] - b[j];
         points.h[j]     = indenter.profile(x);
         points.slope[j] = indenter.slope(x);
-        state.u[j]      = scales.eps + points.h[j] - state.delta - gap[j];
       }
     // The boundaries at the two edges (graded_boundaries places them).
     for (unsigned int e = 0; e < 2; ++e)

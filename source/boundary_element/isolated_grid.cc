@@ -15,6 +15,7 @@ namespace viscoslide
                      prm.geometry.elongation,
                      dx,
                      prm.geometry.length() * scales.eps,
+                     scales.eps,
                      out)
     , prm(prm)
     , scales(scales)

@@ -27,7 +27,7 @@ namespace viscoslide
         // of the zone's ten cells or so, costs an iteration at most. The
         // present grid is kept whole for after.
         assemble(false);
-        const Vector<double> r0 = residual, g = gaps, u_kept = state.u;
+        const Vector<double> r0 = residual, g = gaps;
         const auto           from = grid->placement();
         auto                 kept = std::move(grid);
         const double         step = 0.1 * kept->spacing();
@@ -42,8 +42,8 @@ namespace viscoslide
             motion_columns[k] -= r0;
             motion_columns[k] /= step;
           }
-        grid    = std::move(kept);
-        state.u = u_kept;
+        grid      = std::move(kept);
+        state.gap = g;
       }
     assemble(with_matrix);
     const double gc = prm.adhesion.contact_gap * law_range;
@@ -63,7 +63,7 @@ namespace viscoslide
   BoundaryElementSolver<dim>::pin_change(const Vector<double> &v,
                                          const unsigned int    e) const
   {
-    const unsigned int n       = state.u.size();
+    const unsigned int n       = state.gap.size();
     const double       d_delta = control.force_controlled ? v[n] : 0.;
     double             change  = 0;
     for (const auto &[i, w] : grid->pin(e))
@@ -88,7 +88,7 @@ namespace viscoslide
     // elimination with the grid's preconditioner in place of J^-1 is its
     // preconditioner.
     const unsigned int          n_motions = grid->n_motions();
-    const unsigned int          N         = state.u.size() + 1;
+    const unsigned int          N         = state.gap.size() + 1;
     NewtonPreconditioner       &P         = grid->preconditioner();
     std::vector<Vector<double>> Z(n_motions);
     FullMatrix<double> M(n_motions, n_motions), M_inverse(n_motions, n_motions);
@@ -192,11 +192,7 @@ namespace viscoslide
         d[k] = alpha * motion_update[k];
       state.delta = start_of_step.delta;
       grid->move(*placement0, d, gaps0, state);
-      const unsigned int n = state.u.size();
-      for (unsigned int j = 0; j < n; ++j)
-        state.u[j] += alpha * update[j];
-      if (control.force_controlled)
-        state.delta += alpha * update[n];
+      step_state(alpha);
     };
     return p;
   }
@@ -214,7 +210,6 @@ namespace viscoslide
     const auto              restore          = [&] {
       state.delta = state_start.delta;
       grid->place(*start, gaps_start, state);
-      state.u         = state_start.u;
       last_quantities = quantities_start;
       return -1;
     };

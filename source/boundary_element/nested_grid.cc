@@ -87,10 +87,13 @@ namespace viscoslide
     compliance->set_speed(speed);
     nested_preconditioner =
       std::make_unique<NestedPreconditioner>(*layout, *multigrid);
-    const unsigned int n = layout->size();
-    const double       h = layout->h, stretch = prm.geometry.elongation;
-    Points            &p = points;
-    p                    = Points();
+    // The displacements carried over (they are smooth where the gaps are
+    // not: under the contact's edge).
+    const Vector<double> old_u = state.displacement(points.h, scales.eps);
+    const unsigned int   n     = layout->size();
+    const double         h = layout->h, stretch = prm.geometry.elongation;
+    Points              &p = points;
+    p                      = Points();
     Vector<double> u(n);
     for (unsigned int j = 0; j < n; ++j)
       {
@@ -103,9 +106,9 @@ namespace viscoslide
         p.h.push_back(indenter.profile(r));
         p.slope.push_back(r > 0 ? indenter.slope(r) * p.x[j] / r : 0.);
         if (old)
-          u[j] = value_at(*old, state.u, lx, ly);
+          u[j] = value_at(*old, old_u, lx, ly);
       }
-    state.u = u;
+    state.set_displacement(u, p.h, scales.eps);
     ++n_generation;
     std::ostringstream s;
     s << "Boundary-element grid: " << n << " points, " << shape[1] << " x "

@@ -22,7 +22,7 @@ namespace viscoslide
     for (unsigned int j = 0; j < grid->size(); ++j)
       if (p.y[j] == 0. && std::abs(p.x[j]) <= half_width &&
           (gaps[j] < 10 * scales.eps || j % 8 == 0))
-        points.push_back({p.x[j], gaps[j], -traction[j], state.u[j]});
+        points.push_back({p.x[j], gaps[j], -traction[j], displacement[j]});
     const std::string what =
       "steady state (boundary elements), V_hat = " + CsvTable::format(V_hat) +
       ", delta_hat = " + CsvTable::format(approach() / scales.eps);
@@ -32,7 +32,7 @@ namespace viscoslide
                       what,
                       gaps,
                       traction,
-                      state.u,
+                      displacement,
                       scales.eps,
                       scales.sigma_max,
                       scales.R);

@@ -18,6 +18,7 @@ namespace viscoslide
                        prm.geometry.elongation,
                        dx,
                        prm.geometry.length() * scales.eps,
+                       scales.eps,
                        out)
     , prm(prm)
     , scales(scales)

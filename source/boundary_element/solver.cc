@@ -88,7 +88,7 @@ namespace viscoslide
       {
         pcout << "Steady sliding under "
               << Parameters::to_string(prm.sliding.control)
-              << " control, boundary elements on " << state.u.size()
+              << " control, boundary elements on " << state.gap.size()
               << " points" << std::endl;
         run_stations(*this,
                      Parameters::SlidingSolver::boundary_element,
@@ -115,17 +115,17 @@ namespace viscoslide
   BoundaryElementSolver<dim>::assemble(const bool with_matrix)
   {
     TimerOutput::Scope t(timer, "boundary element: residual");
-    const unsigned int n = state.u.size();
-    const auto        &u = state.u;
+    const unsigned int n = state.gap.size();
     const auto        &p = grid->at();
-    gaps.reinit(n);
+    gaps                 = state.gap;
+    displacement         = state.displacement(p.h, scales.eps);
+    const auto &u        = displacement;
     traction.reinit(n);
     tangent.reinit(n);
     Vector<double> w(n), Cw;
     double         Fn = 0;
     for (unsigned int j = 0; j < n; ++j)
       {
-        gaps[j]     = scales.eps + p.h[j] - state.delta - u[j];
         traction[j] = traction_law().traction(gaps[j]);
         tangent[j]  = traction_law().derivative(gaps[j]);
         w[j] = traction[j] - (dashpot > 0 ? dashpot * (u[j] - anchor[j]) : 0.);
@@ -140,24 +140,23 @@ namespace viscoslide
                     : 0.;
     if (with_matrix && grid->positive_compliance())
       {
-        // The residual's rounding error: at R_hat 1e6 and more u is 1e4
-        // eps, its gap's last digits times the repulsive wall's stiffness
-        // a traction that the coarse cells' compliance turns into 1e-6 eps
-        // and more, above the tolerance. Where the compliance is positive,
-        // C|v| sums the magnitudes of the terms of C v; their rounding
-        // errors, of either sign, add up as a random walk (1/sqrt(n) of
-        // that sum).
+        // The residual's rounding error: the gaps' last digits times the
+        // repulsive wall's stiffness, a traction that the coarse cells'
+        // compliance magnifies, and u's own (at R_hat 1e6 and more u is
+        // 1e4 eps). Where the compliance is positive, C|v| sums the
+        // magnitudes of the terms of C v; their rounding errors, of either
+        // sign, add up as a random walk (1/sqrt(n) of that sum).
         Vector<double> magnitude(n), C_magnitude;
         for (unsigned int j = 0; j < n; ++j)
           magnitude[j] =
             std::abs(traction[j]) +
-            std::abs(tangent[j]) * (std::abs(u[j]) + std::abs(p.h[j]) +
-                                    std::abs(state.delta) + scales.eps);
+            std::abs(tangent[j]) * (std::abs(gaps[j]) + scales.eps);
         grid->apply(magnitude, C_magnitude);
         double sum = 0;
         for (unsigned int j = 0; j < n; ++j)
           sum += std::pow(std::numeric_limits<double>::epsilon() *
-                            (std::abs(u[j]) + C_magnitude[j]),
+                            (std::abs(u[j]) + std::abs(p.h[j]) +
+                             std::abs(state.delta) + C_magnitude[j]),
                           2);
         round_off = std::sqrt(sum / n) / scales.eps;
       }
@@ -179,7 +178,7 @@ namespace viscoslide
     // the line search (the largest misfit alone stalled it at the contact
     // edges). With it the load equation relative to the total absolute
     // traction, as the finite-element solvers measure their residual.
-    const unsigned int n        = state.u.size();
+    const unsigned int n        = state.gap.size();
     const auto        &area     = grid->at().area;
     double             misfit   = 0;
     double             absolute = 0;
@@ -211,7 +210,7 @@ namespace viscoslide
                                              const Vector<double> &src) const
   {
     // The Jacobian: du + C[(q' + c) du + q' d delta], and the load row.
-    const unsigned int n     = state.u.size();
+    const unsigned int n     = state.gap.size();
     const auto        &area  = grid->at().area;
     const bool         force = control.force_controlled;
     Vector<double>     w(n), Cw;
@@ -290,6 +289,19 @@ namespace viscoslide
 
 
   template <int dim>
+  void
+  BoundaryElementSolver<dim>::step_state(const double alpha)
+  {
+    // The update is one of u and delta; a gap changes by -(du + d delta).
+    const unsigned int n  = state.gap.size();
+    const double       dd = control.force_controlled ? alpha * update[n] : 0.;
+    for (unsigned int j = 0; j < n; ++j)
+      state.gap[j] -= alpha * update[j] + dd;
+    state.delta += dd;
+  }
+
+
+  template <int dim>
   NewtonProblem
   BoundaryElementSolver<dim>::newton_problem()
   {
@@ -311,16 +323,13 @@ namespace viscoslide
       };
     p.remember_iterate = [this] { start_of_step = state; };
     p.step             = [this](const double alpha) {
-      const unsigned int n = state.u.size();
-      for (unsigned int j = 0; j < n; ++j)
-        state.u[j] = start_of_step.u[j] + alpha * update[j];
-      state.delta = start_of_step.delta +
-                    (control.force_controlled ? alpha * update[n] : 0.);
+      state = start_of_step;
+      step_state(alpha);
     };
     p.set_dashpot = [this](const double c) {
       dashpot = c;
       if (c > 0)
-        anchor = state.u;
+        anchor = state.displacement(grid->at().h, scales.eps);
     };
     return p;
   }
@@ -418,7 +427,7 @@ namespace viscoslide
     assemble(false);
     last_quantities = grid->measure(gaps,
                                     traction,
-                                    state.u,
+                                    displacement,
                                     prm.adhesion.contact_gap * law_range);
   }
 

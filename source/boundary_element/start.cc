@@ -66,7 +66,7 @@ namespace viscoslide
     bool         done = false;
     grid->fit_to_speed(0., state);
     control.hold_approach();
-    state.delta = prm.loading.initial_approach * scales.eps;
+    state.set_approach(prm.loading.initial_approach * scales.eps);
     if (solve() < 0)
       throw std::runtime_error(
         "the boundary-element solver found no equilibrium at the initial "
@@ -192,7 +192,8 @@ namespace viscoslide
     for (unsigned int i = 0; i < m; ++i)
       q[first + i] = rhs[i];
     state.delta = rhs[m];
-    grid->apply(q, state.u);
+    Vector<double> u;
+    grid->apply(q, u);
     // Newton's method from this contact converges for Tabor parameters up
     // to about 10, and crawls beyond (the adhesive zone must form at each
     // edge, a short-range jump). A larger one is reached by continuation
@@ -206,11 +207,12 @@ namespace viscoslide
     set_law_range(range);
     // The contact at the law's equilibrium gap, the range.
     state.delta -= range - scales.eps;
+    state.set_displacement(u, p.h, scales.eps);
     // Inside, the gap at which the law gives that traction (at most its
     // peak), so that the residual u - C q(g) starts small.
     const auto start_gap = gap_for_traction(traction_law(), range);
     for (unsigned int j = first; j < first + m; ++j)
-      state.u[j] = scales.eps + p.h[j] - state.delta - start_gap(q[j]);
+      state.gap[j] = start_gap(q[j]);
     control.hold_force(P);
     pcout << "Start: the JKR contact of the relaxed solid at F_hat = "
           << prm.loading.target_load << ", L_hat = " << 2 * a / scales.R;
@@ -253,19 +255,17 @@ namespace viscoslide
         const double peak = gap_for_traction(traction_law(), range)(1e300);
         set_law_range(next);
         const auto next_gap = gap_for_traction(traction_law(), next);
-        state.delta += range - next;
-        const auto &h = grid->at().h;
-        for (unsigned int j = 0; j < state.u.size(); ++j)
+        state.set_approach(state.delta + range - next);
+        for (unsigned int j = 0; j < state.gap.size(); ++j)
           if (gaps_at[j] < peak)
-            state.u[j] =
-              scales.eps + h[j] - state.delta - next_gap(traction_at[j]);
+            state.gap[j] = next_gap(traction_at[j]);
         const bool last_resort = factor > 0.95;
         if (solve(last_resort) >= 0)
           {
             range  = next;
             factor = std::max(0.7, factor * factor);
             pcout << "  the law's range " << range / scales.eps << " eps, "
-                  << state.u.size() << " cells, L_hat = "
+                  << state.gap.size() << " cells, L_hat = "
                   << last_quantities.contact_length / scales.contact
                   << std::endl;
             continue;
@@ -275,7 +275,6 @@ namespace viscoslide
         set_law_range(range);
         state.delta = at_state.delta;
         grid->place(*placement_at, gaps_at, state);
-        state.u = at_state.u;
         assemble(false); // the gaps and tractions the next step starts from
         factor = std::sqrt(factor);
       }

@@ -48,11 +48,13 @@ namespace viscoslide
                                 const double        elongation,
                                 const double        dx,
                                 const double        length,
+                                const double        eps,
                                 ConditionalOStream &out)
     : SurfaceGrid<dim>(dx)
     , indenter(indenter)
     , elongation(elongation)
     , length(length)
+    , eps(eps)
     , out(out)
   {
   }
@@ -81,7 +83,8 @@ namespace viscoslide
   UniformGrid<dim>::remake(const std::array<unsigned int, dim - 1> &new_shape,
                            SurfaceState                            &state)
   {
-    const Vector<double>                    old_u     = state.u;
+    // The displacements carried over at the same places.
+    const Vector<double> old_u = state.displacement(this->points.h, eps);
     const std::array<unsigned int, dim - 1> old_shape = shape;
     shape                                             = new_shape;
     make_operators(shape);
@@ -93,7 +96,7 @@ namespace viscoslide
     p.y.resize(n);
     p.h.resize(n);
     p.slope.resize(n);
-    state.u.reinit(n);
+    Vector<double>     u(n);
     const unsigned int old_x = old_shape[dim - 2],
                        old_y = dim == 2 ? 1 : old_shape[0];
     for (unsigned int j = 0; j < n; ++j)
@@ -118,9 +121,10 @@ namespace viscoslide
                        o_y = std::clamp<long>(i_y - n_y / 2 + old_y / 2,
                                               0,
                                               long(old_y) - 1);
-            state.u[j]     = old_u[o_y * old_x + o_x];
+            u[j]           = old_u[o_y * old_x + o_x];
           }
       }
+    state.set_displacement(u, p.h, eps);
     p.area.assign(n, this->dA);
     ++this->n_generation;
     this->preconditioner().reset();

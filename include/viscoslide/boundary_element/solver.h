@@ -102,7 +102,7 @@ namespace viscoslide
     unsigned long
     n_unknowns() const override
     {
-      return state.u.size() + (control.force_controlled ? 1 : 0);
+      return state.gap.size() + (control.force_controlled ? 1 : 0);
     }
     bool
     force_control() const override
@@ -132,6 +132,9 @@ namespace viscoslide
     solve_on_grid(bool relax);
     NewtonProblem
     newton_problem();
+    // The state moved by alpha times Newton's update.
+    void
+    step_state(double alpha);
     // The gaps, tractions and their tangent, the residual u - C q with the
     // load equation last; with the matrix, the residual's rounding error
     // and the preconditioner.
@@ -302,13 +305,14 @@ namespace viscoslide
     double                            V_hat = 0;
     LoadControl                       control;
 
-    // Newton's work: gaps, tractions (q, attraction > 0), their tangent,
-    // the residual u - C q with the load equation last, the update, the
+    // Newton's work: gaps, displacements u, tractions (q, attraction > 0),
+    // their tangent, the residual u - C q with the load equation last, the
+    // update (of u and delta), the
     // iterate a line search starts from, the surface dashpot of relax()
     // and its anchor; the rounding error of residual_norm() at the last
     // Jacobian, which Newton's method takes as its tolerance where it is
     // larger.
-    Vector<double> gaps, traction, tangent, residual, update;
+    Vector<double> gaps, displacement, traction, tangent, residual, update;
     SurfaceState   start_of_step;
     double         dashpot = 0, round_off = 0;
     Vector<double> anchor;

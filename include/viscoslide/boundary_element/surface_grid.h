@@ -29,13 +29,46 @@ namespace viscoslide
 {
   using namespace dealii;
 
-  // The unknowns of the steady state on a grid: the surface's vertical
-  // displacement u_j at the grid's points (towards the indenter > 0) and
-  // the approach delta.
+  // The unknowns of the steady state on a grid: the gap g_j at the grid's
+  // points and the approach delta. The surface's vertical displacement
+  // (towards the indenter > 0) follows as u_j = eps + h_j - delta - g_j.
+  // The gaps are kept rather than u: at R_hat 1e6 and more u, h and delta
+  // are 1e4 eps, and a gap formed from them carries their rounding, 1e-12
+  // eps, which the repulsive wall's stiffness and the coarse cells'
+  // compliance turn into a residual of 1e-3 eps (doc/boundary_element.md).
   struct SurfaceState
   {
-    Vector<double> u;
+    Vector<double> gap;
     double         delta = 0;
+
+    // u at points whose indenter heights are h.
+    Vector<double>
+    displacement(const std::vector<double> &h, const double eps) const
+    {
+      Vector<double> u(gap.size());
+      for (unsigned int j = 0; j < gap.size(); ++j)
+        u[j] = eps + h[j] - delta - gap[j];
+      return u;
+    }
+
+    // The gaps of displacements u at points whose heights are h.
+    void
+    set_displacement(const Vector<double>      &u,
+                     const std::vector<double> &h,
+                     const double               eps)
+    {
+      gap.reinit(u.size());
+      for (unsigned int j = 0; j < u.size(); ++j)
+        gap[j] = eps + h[j] - delta - u[j];
+    }
+
+    // The approach moved to d with the displacements kept.
+    void
+    set_approach(const double d)
+    {
+      gap.add(delta - d);
+      delta = d;
+    }
   };
 
 

@@ -55,11 +55,13 @@ namespace viscoslide
 
   protected:
     // `elongation` stretches the 3D body of revolution across the track;
-    // `length` is the grid's extent across it (3D).
+    // `length` is the grid's extent across it (3D); eps the law's range,
+    // which relates the state's gaps to its displacements.
     UniformGrid(const Indenter     &indenter,
                 double              elongation,
                 double              dx,
                 double              length,
+                double              eps,
                 ConditionalOStream &out);
 
     // The length along x the grid needs up to speed V_hat (internal
@@ -100,7 +102,7 @@ namespace viscoslide
                   SurfaceQuantities    &q) const override;
 
     const Indenter                   &indenter;
-    const double                      elongation, length;
+    const double                      elongation, length, eps;
     ConditionalOStream               &out;
     std::array<unsigned int, dim - 1> shape{};
   };

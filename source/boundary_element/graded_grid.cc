@@ -5,11 +5,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace viscoslide
 {
   namespace
   {
+    // A motion d of a grid whose boundaries are `from` in a multiple of
+    // the spacing of doubles beyond the window's ends, so that a cell moved
+    // rigidly keeps its width to the last bit: rounded at each boundary, a
+    // fine cell 1e6 eps from the origin changed its width by 1e-7 of
+    // itself, a residual that the motions' columns (differences over the
+    // finest cell) divide by it.
+    double
+    exact_motion(const std::vector<double> &from, const double d)
+    {
+      const double extent =
+        std::max(std::abs(from.front()), std::abs(from.back()));
+      const double unit = std::ldexp(1.,
+                                     std::ilogb(extent) + 2 -
+                                       std::numeric_limits<double>::digits);
+      return std::round(d / unit) * unit;
+    }
+
     // The boundaries `from`, made for edges `from_edges`, moved with the
     // edges by d_trail and d_lead (edge_shift, grid.h).
     std::vector<double>
@@ -307,9 +325,11 @@ namespace viscoslide
                    const Vector<double>      &gaps,
                    SurfaceState              &state)
   {
-    const auto &c = dynamic_cast<const Cells &>(from);
-    set_cells(moved_boundaries(c.boundaries, c.edges, d[0], d[1]),
-              {c.edges.first + d[0], c.edges.second + d[1]},
+    const auto  &c     = dynamic_cast<const Cells &>(from);
+    const double trail = exact_motion(c.boundaries, d[0]),
+                 lead  = exact_motion(c.boundaries, d[1]);
+    set_cells(moved_boundaries(c.boundaries, c.edges, trail, lead),
+              {c.edges.first + trail, c.edges.second + lead},
               gaps,
               state);
   }

@@ -177,11 +177,13 @@ namespace viscoslide
              const double                     d_lead)
   {
     const auto [trail, lead] = edges;
+    const double from        = trail + (lead - trail) / 4,
+                 to          = lead - (lead - trail) / 4;
     return [=](const double x) {
-      return x <= trail ? d_trail
-             : x >= lead
+      return x <= from ? d_trail
+             : x >= to
                ? d_lead
-               : d_trail + (x - trail) / (lead - trail) * (d_lead - d_trail);
+               : d_trail + (x - from) / (to - from) * (d_lead - d_trail);
     };
   }
 

@@ -17,20 +17,22 @@ namespace viscoslide
     const unsigned int n_motions = grid->n_motions();
     if (with_matrix)
       {
-        // Each motion's column by a difference: the grid moved by a
-        // tenth of its finest cell with the gaps kept, which changes the
-        // indenter's height at the points and the compliance. At a
-        // thousandth, at Tabor parameter 1000 and R_hat 1e7 (displacements
-        // of 1e4 eps on cells thousands of eps wide), Newton's direction
-        // was no descent direction (the residual grew in proportion to
-        // the step along it); at a tenth the truncation error, a fraction
-        // of the zone's ten cells or so, costs an iteration at most. The
+        // Each motion's column by a difference: the grid moved by its
+        // finest cell with the gaps kept, which changes the indenter's
+        // height at the points and the compliance. The cells carry their
+        // gaps, so the residual is smooth in the motion (the heights change
+        // by h' d + d^2/(2R)); the step is set by the residual's rounding,
+        // which the difference divides by it. At Tabor parameter 2000 and
+        // R_hat 1e7 (a rounding of 1e-7 eps) a tenth of the finest cell
+        // left the columns wrong by 1 % and Newton's direction no descent
+        // direction (the residual grew in proportion to the step along
+        // it); at a thousandth it failed at Tabor parameter 1000. The
         // present grid is kept whole for after.
         assemble(false);
         const Vector<double> r0 = residual, g = gaps;
         const auto           from = grid->placement();
         auto                 kept = std::move(grid);
-        const double         step = 0.1 * kept->spacing();
+        const double         step = kept->spacing();
         motion_columns.resize(n_motions);
         for (unsigned int k = 0; k < n_motions; ++k)
           {

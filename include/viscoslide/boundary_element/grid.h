@@ -58,8 +58,9 @@ namespace viscoslide
 
   // The displacement of a point x of a graded grid made for contact edges
   // at `edges` when the edges move by d_trail and d_lead: rigidly with
-  // each edge beyond it, linearly in between, so that each edge's cells
-  // (and the adhesive zone on them) move with it.
+  // each edge up to a quarter of the contact's width inside it, linearly
+  // over the half between, so that each edge's cells (and the adhesive
+  // zone on them) move with it and only coarse cells stretch.
   std::function<double(double)>
   edge_shift(const std::pair<double, double> &edges,
              double                           d_trail,

@@ -220,6 +220,10 @@ def print_collapse(runs):
             g = interpolate_log(r['s'], [t['s'] for t in top], [t['G_trail'] for t in top])
             if g is not None and within_reach(r):
                 gaps.append((r['s'], r['G_trail'] / g - 1))
+        if not gaps:
+            print(f"G_trail at {case(rows)} against {case(top)}: no speed within "
+                  "the edge model's reach in both")
+            continue
         worst = max(gaps, key=lambda x: abs(x[1]))
         print(f"G_trail at {case(rows)} against {case(top)} at the same s, "
               f"{len(gaps)} speeds: within {100 * abs(worst[1]):.2f} % (at s = {worst[0]:.3g})")
@@ -299,6 +303,8 @@ def print_edge_model(curves_run, runs):
         for what, chosen in ((f'V tau_c < {100 * MODEL_REACH:g} % of the width',
                               [e for e in errors if e[0]]),
                              ('all speeds', errors)):
+            if not chosen:
+                continue
             print(f"edge model (the curves of {case(curves_run)}) at {case(rows)}, "
                   f"{what} ({len(chosen)}): mu within "
                   f"{100 * max(e[1] for e in chosen):.2f} %, L_hat within "
@@ -384,24 +390,35 @@ def print_prediction(curves_run, muT, R_hat, speeds):
 
 
 def main(argv=None):
-    """scripts/edge_cracks FIGURE OUT_DIR [OUT_DIR ...] [--predict muT:R_hat ...]:
-    the tables, the collapse of the trailing edge's G over s, the edge
-    model with the largest Tabor parameter's curves against the other runs
-    (and its curves at the muT:R_hat given, 0.01 to 1000) and the figure
+    """scripts/edge_cracks FIGURE OUT_DIR [OUT_DIR ...] [--curves OUT_DIR]
+    [--predict muT:R_hat ...]: the tables, the collapse of the trailing
+    edge's G over s, the edge model with the curves of the --curves run
+    (by default the largest Tabor parameter's) against the other runs (and
+    its curves at the muT:R_hat given, 0.01 to 1000) and the figure
     (FIGURE.png and .pdf) of finished 2D runs, e.g. scripts/bench_graded's."""
     argv = sys.argv[1:] if argv is None else argv
     predict = argv[argv.index('--predict') + 1:] if '--predict' in argv else []
     argv = argv[:argv.index('--predict')] if predict else argv
+    curves_out = None
+    if '--curves' in argv:
+        k = argv.index('--curves')
+        if k + 1 >= len(argv):
+            sys.exit(main.__doc__)
+        curves_out = argv[k + 1]
+        argv = argv[:k] + argv[k + 2:]
+        argv.append(curves_out)
     if len(argv) < 2:
         sys.exit(main.__doc__)
+    outs = list(dict.fromkeys(argv[1:]))
+    analysed = {out: analyse(out) for out in outs}
+    runs = sorted(analysed.values(), key=lambda rows: (rows[0]['muT'], rows[0]['R_hat']))
     # the curves of the largest Tabor parameter (and R_hat) serve the others
-    runs = sorted((analyse(out) for out in argv[1:]),
-                  key=lambda rows: (rows[0]['muT'], rows[0]['R_hat']))
+    curves_run = analysed[curves_out] if curves_out else runs[-1]
     for rows in runs:
         print_table(rows)
     print_collapse(runs)
-    print_edge_model(runs[-1], runs)
+    print_edge_model(curves_run, runs)
     for case in predict:
         muT, R_hat = map(float, case.split(':'))
-        print_prediction(runs[-1], muT, R_hat, [10 ** (k / 4 - 2) for k in range(21)])
+        print_prediction(curves_run, muT, R_hat, [10 ** (k / 4 - 2) for k in range(21)])
     figure(runs, argv[0][:-4] if argv[0].endswith('.png') else argv[0])

@@ -241,24 +241,52 @@ namespace viscoslide
     slope.reinit(n);
     if (V <= 0)
       return;
-    // The response to q_eff - q/E0* (E0* = 1), differentiated in closed
-    // form cell by cell, and its wakes'.
+    // The response to q_eff - q/E0* (E0* = 1), its mean slope over each
+    // cell in closed form, and its wakes'. The mean, not the slope at the
+    // cell's centre: then sum_i A_i q_i slope_i is the exact dissipation of
+    // the piecewise-constant traction. At the centres, the slope's
+    // logarithmic peaks at the boundaries of neighbours of other widths
+    // made it first order in the grading ratio (the energy balance +0.96 %
+    // at V_hat 100 with ratio 1.05, +0.48 % with 1.025, while mu moved by
+    // 0.06 %; doc/boundary_element.md).
     Vector<double>      creep_traction;
-    std::vector<double> edge;
+    std::vector<double> edge, mean_log(n + 1), left(n + 1), right(n + 1);
     effective_traction(q.begin(), creep_traction, edge);
     creep_traction -= q;
+    // e^z E1(z) + ln z, whose derivative is e^z E1(z); -euler at z = 0.
+    const auto wake_primitive = [](const double z) {
+      constexpr double euler = 0.57721566490153286;
+      return z > 0 ? scaled_exponential_integral(z) + std::log(z) : -euler;
+    };
+    // The mean of ln|x - s_k| over cell i, for every boundary k, from the
+    // logarithms of the distances of the cell's ends (-inf at its own,
+    // which cell_integral does not use).
+    for (unsigned int k = 0; k <= n; ++k)
+      left[k] = std::log(std::abs(s[0] - s[k]));
     for (unsigned int i = 0; i < n; ++i)
       {
+        for (unsigned int k = 0; k <= n; ++k)
+          {
+            right[k]    = std::log(std::abs(s[i + 1] - s[k]));
+            mean_log[k] = cell_integral(s[i + 1] - s[k],
+                                        s[i] - s[k],
+                                        w[i],
+                                        right[k],
+                                        left[k]) /
+                          w[i];
+          }
+        std::swap(left, right);
         for (unsigned int j = 0; j < n; ++j)
-          slope[i] -= 2. / M_PI * creep_traction[j] *
-                      std::log(std::abs((x[i] - s[j]) / (x[i] - s[j + 1])));
+          slope[i] -=
+            2. / M_PI * creep_traction[j] * (mean_log[j] - mean_log[j + 1]);
         for (unsigned int r = 0; r < wake.size(); ++r)
           if (!wake[r].empty())
             {
               const auto [theta, c] = creep.retardations[r];
-              slope[i] -=
-                2. / M_PI * c * edge[r] *
-                scaled_exponential_integral((x[i] - s[0]) / (V * theta));
+              const double L        = V * theta;
+              slope[i] -= 2. / M_PI * c * edge[r] * L / w[i] *
+                          (wake_primitive((s[i + 1] - s[0]) / L) -
+                           wake_primitive((s[i] - s[0]) / L));
             }
       }
   }

@@ -322,7 +322,7 @@ def figure(runs, path):
     solution against its parts, the edges as cracks and the bulk's
     hysteresis (Hunter)."""
     plt = style.pyplot(style.CURVES, 'scripts/edge_cracks')
-    fig, (left, width, right) = plt.subplots(1, 3, figsize=(15, 4.6))
+    fig, (left, width, right) = plt.subplots(1, 3, figsize=(15, 5.6))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     one_R = len({rows[0]['R_hat'] for rows in runs}) == 1
     for k, (colour, rows) in enumerate(zip(colours, runs)):
@@ -332,9 +332,10 @@ def figure(runs, path):
         # the smaller Tabor parameters smaller and on top: the points meet
         size = 4 + 2.5 * (len(runs) - 1 - k)
         left.loglog(s, [r['G_trail'] for r in rows], 'o', mfc='none', mew=1.2, color=colour,
-                    ms=size, zorder=3 + k, label=label + ', trailing edge')
+                    ms=size, zorder=3 + k)
         left.loglog(s, [r['G_lead'] for r in rows], 's', mfc='none', mew=1.2, color=colour,
-                    ms=size, zorder=3 + k, label=label + ', leading edge')
+                    ms=size, zorder=3 + k)
+        left.plot([], [], '-', color=colour, lw=2, label=label)
         width.semilogx(s, [100 * r['L_jkr'] for r in rows], 'o-', color=colour, ms=4, lw=0.8,
                        label=label)
         V = [r['V_hat'] for r in rows]
@@ -353,22 +354,25 @@ def figure(runs, path):
     left.set_ylabel(r'$G/\Delta\gamma$ of the relaxed outer contact')
     left.set_title('edges as cracks' + (rf": $\hat R = {style.fmt(runs[0][0]['R_hat'])}$"
                                         if one_R else ''), fontsize=10)
-    left.legend(fontsize=7, loc='center right')
+    left.plot([], [], 'ko', mfc='none', label='trailing edge')
+    left.plot([], [], 'ks', mfc='none', label='leading edge')
+    # below the panels: at many Tabor parameters a legend inside covers
+    # the curves
+    left.legend(fontsize=7, loc='upper center', bbox_to_anchor=(0.5, -0.16), ncol=3)
     width.axhline(0, color='0.7', lw=0.6, zorder=0)
     width.set_xlabel(r'$s = V\tau_c/a_0$')
     width.set_ylabel(r'$L/L_{JKR} - 1$ (%), JKR of the relaxed solid')
     width.set_title('contact width: the slow limit', fontsize=10)
-    width.legend(fontsize=7, loc='upper left')
+    width.legend(fontsize=7, loc='upper center', bbox_to_anchor=(0.5, -0.16), ncol=3)
     right.plot([], [], 'k--', lw=1, label=r'edges as cracks, $(G_t - G_l)/F$')
     right.plot([], [], 'k:', lw=1.2, label='bulk: Hunter at the Hertz load of the width')
     right.plot([], [], 'k-', lw=0.8, label='their sum')
     mu_min = min(r['mu'] for rows in runs for r in rows)
-    # a decade above the curves for the legend
-    right.set_ylim(mu_min / 5, 10 * max(r['mu'] for rows in runs for r in rows))
+    right.set_ylim(mu_min / 5, 2 * max(r['mu'] for rows in runs for r in rows))
     right.set_xlabel(style.V_LABEL)
     right.set_ylabel(r'$\mu$')
     right.set_title('friction: full solution (points) and its parts', fontsize=10)
-    right.legend(fontsize=7, loc='upper left', ncol=2)
+    right.legend(fontsize=7, loc='upper center', bbox_to_anchor=(0.5, -0.16), ncol=3)
     fig.tight_layout()
     style.save(fig, path)
 

@@ -5,6 +5,7 @@
 #include <viscoslide/boundary_element/solver.h>
 
 #include <cmath>
+#include <limits>
 
 namespace viscoslide
 {
@@ -14,11 +15,15 @@ namespace viscoslide
   {
     // Every point where the surfaces interact, and every eighth one
     // elsewhere within the Domain width, so that the wake shows without a
-    // file of the whole period; in 3D along the track's centre line
-    // (y = 0), with the map of the surface beside it.
+    // file of the whole period (a grid that follows the contact has its
+    // window about it, which at real scale is wider than the Domain
+    // width); in 3D along the track's centre line (y = 0), with the map of
+    // the surface beside it.
     const auto               &p = grid->at();
     std::vector<ProfilePoint> points;
-    const double half_width = prm.geometry.domain_width * scales.eps / 2;
+    const double              half_width = grid->follows_contact()
+                                             ? std::numeric_limits<double>::infinity()
+                                             : prm.geometry.domain_width * scales.eps / 2;
     for (unsigned int j = 0; j < grid->size(); ++j)
       if (p.y[j] == 0. && std::abs(p.x[j]) <= half_width &&
           (gaps[j] < 10 * scales.eps || j % 8 == 0))

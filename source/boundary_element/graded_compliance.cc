@@ -12,9 +12,9 @@ namespace viscoslide
     // (a - b far from the cell has lost the digits): P(a) - P(b) with
     // P(t) = t ln|t| - t. Far from the cell P(a) and P(b) are large and
     // nearly equal: a cell of 0.001 eps seen from 1e6 eps loses 7 of the
-    // 16 digits to the difference, and a grid moved by a tenth of its
-    // finest cell (the motions' columns) changed the residual by that
-    // rounding over the step, a tenth of the column. There the difference
+    // 16 digits to the difference, a rounding that the motions' columns
+    // (differences over a grid moved by its finest cell) divide by their
+    // step. There the difference
     // in closed form, w (ln far - 1) - near ln(1 - w/far), the logarithm
     // by its series where w/far < 1e-5 (three terms: 1e-16 of it), which
     // most entries are.

@@ -14,10 +14,9 @@ namespace viscoslide
     // nearly equal: a cell of 0.001 eps seen from 1e6 eps loses 7 of the
     // 16 digits to the difference, a rounding that the motions' columns
     // (differences over a grid moved by its finest cell) divide by their
-    // step. There the difference
-    // in closed form, w (ln far - 1) - near ln(1 - w/far), the logarithm
-    // by its series where w/far < 1e-5 (three terms: 1e-16 of it), which
-    // most entries are.
+    // step. There the difference in closed form, w (ln far - 1) - near
+    // ln(1 - w/far), the logarithm by its series where w/far < 1e-5 (three
+    // terms: 1e-16 of it), which most entries are.
     double
     log_one_minus(const double x)
     {

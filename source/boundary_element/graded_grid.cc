@@ -144,10 +144,10 @@ namespace viscoslide
                    const std::function<double(double)> &shift)
   {
     // The state carried over as its gaps; the first grid from u = 0.
-    const auto          &x       = points.x;
-    const Vector<double> old_gap = state.gap;
-    const unsigned int   n       = new_boundaries.size() - 1;
-    Vector<double>       gap(n);
+    const auto           &x       = points.x;
+    const Vector<double> &old_gap = state.gap; // read before set_cells
+    const unsigned int    n       = new_boundaries.size() - 1;
+    Vector<double>        gap(n);
     for (unsigned int j = 0; j < n; ++j)
       {
         // Linear between the old points, beyond them the nearer end's.

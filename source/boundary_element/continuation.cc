@@ -71,13 +71,14 @@ namespace viscoslide
                                : (next - at) / (at - before.at);
         if (moving && before.valid)
           grid->predict(edges_at, before.edges, ratio, state);
-        predict(at_state,
-                generation_at,
-                before.state,
-                before.valid && before.generation == grid->generation() &&
-                    before.state.gap.size() == state.gap.size()
-                  ? ratio
-                  : 0.);
+        if (moving || !predict_on_coarse(at, next, at_state, set))
+          predict(at_state,
+                  generation_at,
+                  before.state,
+                  before.valid && before.generation == grid->generation() &&
+                      before.state.gap.size() == state.gap.size()
+                    ? ratio
+                    : 0.);
         if (solve(!moving) >= 0)
           {
             before = {true, false, at, at_state, generation_at, edges_at};
@@ -96,6 +97,59 @@ namespace viscoslide
         if (size < min_step)
           return false;
       }
+    return true;
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::predict_on_coarse(
+    const double                       at,
+    const double                       next,
+    const SurfaceState                &at_state,
+    const std::function<void(double)> &set)
+  {
+    const auto coarse = grid->coarse_placement();
+    if (!coarse)
+      return false;
+    const auto fine = grid->placement();
+    const auto back = [&](const bool ok) {
+      grid->regrid(*fine, state);
+      state = at_state;
+      set(next);
+      return ok;
+    };
+    // The coarse equilibrium at the start: the step before's, or solved
+    // from the fine one's values at the coarse points.
+    grid->regrid(*coarse, state);
+    if (coarse_step.valid && std::abs(coarse_step.at - at) < 1e-12)
+      state = coarse_step.state;
+    else
+      {
+        set(at);
+        if (solve_on_grid(false) < 0)
+          return back(false);
+        coarse_step = {true, at, state};
+      }
+    set(next);
+    if (solve_on_grid(false) < 0)
+      {
+        coarse_step.valid = false;
+        return back(false);
+      }
+    SurfaceState now = state, before = coarse_step.state;
+    coarse_step = {true, next, now};
+    back(true);
+    if (!grid->carry(*coarse, now) || !grid->carry(*coarse, before))
+      return false;
+    state.delta += now.delta - before.delta;
+    for (unsigned int j = 0; j < state.gap.size(); ++j)
+      state.gap[j] = std::max(state.gap[j] + now.gap[j] - before.gap[j],
+                              std::min(at_state.gap[j], scales.eps));
+    // The band about the predicted contact, rather than a second solve on
+    // a new band after the first.
+    update_quantities();
+    grid->follow(last_quantities, traction, false, state);
     return true;
   }
 
@@ -177,6 +231,7 @@ namespace viscoslide
     if (V_hat == 0)
       {
         step_before = {};
+        coarse_step = {};
         // From the relaxed state: directly, or else from the speed whose
         // relaxation length is a tenth of the grid spacing for the slowest
         // arm (a spectrum's may be decades slower than the time unit of
@@ -225,6 +280,7 @@ namespace viscoslide
     const double from     = force ? control.target_force : state.delta;
     const double distance = std::abs(target - from);
     step_before           = {};
+    coarse_step           = {};
     return follow(
       from,
       target,
@@ -248,6 +304,7 @@ namespace viscoslide
                                             const std::function<bool()> &done)
   {
     step_before = {};
+    coarse_step = {};
     if (!follow(
           state.delta,
           to * scales.eps,
@@ -279,6 +336,11 @@ namespace viscoslide
     const std::function<void(double)> &,                                  \
     const std::function<void()> &,                                        \
     const std::function<bool()> &);                                       \
+  template bool BoundaryElementSolver<dim>::predict_on_coarse(            \
+    double,                                                               \
+    double,                                                               \
+    const SurfaceState &,                                                 \
+    const std::function<void(double)> &);                                 \
   template void BoundaryElementSolver<dim>::set_speed(double);            \
   template bool BoundaryElementSolver<dim>::start_sliding(double);        \
   template bool BoundaryElementSolver<dim>::continue_to(                  \

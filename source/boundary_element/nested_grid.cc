@@ -91,24 +91,22 @@ namespace viscoslide
     // not: under the contact's edge).
     const Vector<double> old_u = state.displacement(points.h, scales.eps);
     const unsigned int   n     = layout->size();
-    const double         h = layout->h, stretch = prm.geometry.elongation;
-    Points              &p = points;
-    p                      = Points();
-    Vector<double> u(n);
+    const double         h     = layout->h;
+    Points              &p     = points;
+    p                          = Points();
     for (unsigned int j = 0; j < n; ++j)
       {
         const int lx = layout->lattice_x(j), ly = layout->lattice_y(j);
         p.x.push_back(lx * h);
         p.y.push_back(ly * h);
         p.area.push_back(layout->area(j));
-        // The body of revolution, stretched across the track.
-        const double r = std::hypot(p.x[j], p.y[j] / std::sqrt(stretch));
+        const double r = radius(lx, ly);
         p.h.push_back(indenter.profile(r));
         p.slope.push_back(r > 0 ? indenter.slope(r) * p.x[j] / r : 0.);
-        if (old)
-          u[j] = value_at(*old, old_u, lx, ly);
       }
-    state.set_displacement(u, p.h, scales.eps);
+    state.set_displacement(old ? carried(*old, old_u) : Vector<double>(n),
+                           p.h,
+                           scales.eps);
     ++n_generation;
     std::ostringstream s;
     s << "Boundary-element grid: " << n << " points, " << shape[1] << " x "
@@ -169,6 +167,55 @@ namespace viscoslide
     };
     return (1 - a) * (1 - b) * at(x0, y0) + a * (1 - b) * at(x0 + 1, y0) +
            (1 - a) * b * at(x0, y0 + 1) + a * b * at(x0 + 1, y0 + 1);
+  }
+
+
+  Vector<double>
+  NestedGrid::carried(const NestedLayout &old, const Vector<double> &u) const
+  {
+    Vector<double> here(layout->size());
+    for (unsigned int j = 0; j < here.size(); ++j)
+      here[j] = value_at(old, u, layout->lattice_x(j), layout->lattice_y(j));
+    return here;
+  }
+
+
+  double
+  NestedGrid::radius(const int x, const int y) const
+  {
+    return std::hypot(x * layout->h,
+                      y * layout->h / std::sqrt(prm.geometry.elongation));
+  }
+
+
+  std::shared_ptr<const SurfaceGrid<3>::Placement>
+  NestedGrid::coarse_placement() const
+  {
+    if (std::find(layout->band.begin(), layout->band.end(), true) ==
+        layout->band.end())
+      return nullptr;
+    auto p   = std::make_shared<Band>();
+    p->flags = std::vector<bool>(layout->band.size(), false);
+    return p;
+  }
+
+
+  bool
+  NestedGrid::carry(const Placement &p, SurfaceState &state) const
+  {
+    const NestedLayout old(shape,
+                           dx,
+                           prm.boundary_element.refinement,
+                           dynamic_cast<const Band &>(p).flags);
+    if (old.size() != state.gap.size())
+      return false;
+    std::vector<double> h(old.size());
+    for (unsigned int j = 0; j < h.size(); ++j)
+      h[j] = indenter.profile(radius(old.lattice_x(j), old.lattice_y(j)));
+    state.set_displacement(carried(old, state.displacement(h, scales.eps)),
+                           points.h,
+                           scales.eps);
+    return true;
   }
 
 

@@ -9,8 +9,10 @@
 // (the contact's edge), widened by Band width; after each converged state
 // whose band has left the refined cells a new grid is made about it and
 // the state solved again (solver.h, solve), so that the band moves with
-// the edge through the continuation. Its preconditioner is the coarse
-// window's multigrid (nested_preconditioner.h) [nested_grid.cc].
+// the edge through the continuation; each continuation step is taken
+// first on the undivided window (coarse_placement, carry; solver.h,
+// predict_on_coarse). Its preconditioner is the coarse window's multigrid
+// (nested_preconditioner.h) [nested_grid.cc].
 #ifndef viscoslide_boundary_element_nested_grid_h
 #define viscoslide_boundary_element_nested_grid_h
 
@@ -85,6 +87,10 @@ namespace viscoslide
               double                R) const override;
     void
     regrid(const Placement &p, SurfaceState &state) override;
+    std::shared_ptr<const Placement>
+    coarse_placement() const override;
+    bool
+    carry(const Placement &p, SurfaceState &state) const override;
 
   private:
     // The band flags of a grid.
@@ -112,6 +118,13 @@ namespace viscoslide
              const Vector<double> &u,
              int                   x,
              int                   y) const;
+    // The displacements u on the points of `old`, at this grid's points.
+    Vector<double>
+    carried(const NestedLayout &old, const Vector<double> &u) const;
+    // The distance from the axis of the body of revolution, stretched
+    // across the track, of lattice point (x, y).
+    double
+    radius(int x, int y) const;
 
     unsigned int
     next(unsigned int j) const override

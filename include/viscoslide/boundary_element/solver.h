@@ -213,6 +213,26 @@ namespace viscoslide
       std::pair<double, double> edges;
     };
     StepBefore step_before;
+    // On a grid that refines a coarse one: the coarse grid's equilibrium
+    // at the step's start, kept from the step before.
+    struct CoarseStep
+    {
+      bool         valid = false;
+      double       at    = 0;
+      SurfaceState state;
+    };
+    CoarseStep coarse_step;
+    // The predictor of a step from `at` (state at_state) to `next` on such
+    // a grid: the step taken on the coarse grid, whose change in the
+    // displacements (smooth, where the gaps are not) is added to at_state
+    // (nested iteration, as Brandt's full multigrid starts each level from
+    // the coarser one). The grid is left as it was; false where the
+    // coarse grid fails or there is none.
+    bool
+    predict_on_coarse(double                             at,
+                      double                             next,
+                      const SurfaceState                &at_state,
+                      const std::function<void(double)> &set);
     // Steps the control parameter from its present value to `to` through
     // set(value), in steps no larger than `step` (halved where Newton
     // fails, down to `min_step`), calling on_converged after each and

@@ -230,6 +230,22 @@ namespace viscoslide
     regrid(const Placement & /*p*/, SurfaceState & /*state*/)
     {
     }
+    // A grid that refines cells of a coarse one (the nested grid's band):
+    // the coarse grid's placement, on which a continuation step is first
+    // taken (solver.h, predict_on_coarse); null for any other grid or
+    // while nothing is refined.
+    virtual std::shared_ptr<const Placement>
+    coarse_placement() const
+    {
+      return nullptr;
+    }
+    // A state of the grid at `p` carried onto this one (this grid left as
+    // it is); false where it cannot be.
+    virtual bool
+    carry(const Placement & /*p*/, SurfaceState & /*state*/) const
+    {
+      return false;
+    }
     // The grid at `p`, the state given by its gaps on the points (delta
     // kept).
     virtual void

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/lac/lapack_templates.h>
+
 #include <viscoslide/boundary_element/nested_compliance.h>
 
 #include <algorithm>
@@ -275,24 +277,65 @@ namespace viscoslide
             u_cell[t] = v;
           }
         for_near(cell, [&](const unsigned int j, const unsigned int D) {
-          const double *q = &q_eff[l.first[j]];
-          if (l.band[j])
-            {
-              // Source by source, an axpy over the cell's points (which
-              // the compiler vectorises, a sum over sources it may not).
-              const double *a = &fine_from_band[D * nf * nf];
-              for (unsigned int f = 0; f < nf; ++f, a += nf)
-                {
-                  const double v = q[f];
-                  for (unsigned int t = 0; t < nf; ++t)
-                    u_cell[t] += a[t] * v;
-                }
-            }
-          else
+          if (!l.band[j])
             for (unsigned int t = 0; t < nf; ++t)
-              u_cell[t] += fine_from_coarse[t * nD + D] * q[0];
+              u_cell[t] += fine_from_coarse[t * nD + D] * q_eff[l.first[j]];
         });
       }
+    add_band_near_field(q_eff, u);
+  }
+
+
+  // The band's sources at band points: for a batch of band cells the
+  // sources about each gathered as one column (zeros where a neighbour is
+  // coarse), and all offsets' coefficients applied to the batch as one
+  // matrix product (BLAS), which runs several times faster than the
+  // same sums cell by cell.
+  void
+  NestedCompliance::add_band_near_field(const std::vector<double> &q_eff,
+                                        Vector<double>            &u) const
+  {
+    const NestedLayout    &l  = layout;
+    const unsigned int     nf = l.r * l.r, nD = (2 * near + 1) * (2 * near + 1);
+    constexpr unsigned int batch = 128;
+    std::vector<unsigned int> cells;
+    std::vector<double>       sources(nD * nf * batch), response(nf * batch);
+    const auto                flush = [&] {
+      const types::blas_int m = nf, n = cells.size(), k = nD * nf;
+      const double          one = 1., zero = 0.;
+      gemm("N",
+           "N",
+           &m,
+           &n,
+           &k,
+           &one,
+           fine_from_band.data(),
+           &m,
+           sources.data(),
+           &k,
+           &zero,
+           response.data(),
+           &m);
+      for (unsigned int i = 0; i < cells.size(); ++i)
+        for (unsigned int t = 0; t < nf; ++t)
+          u[l.first[cells[i]] + t] += response[i * nf + t];
+      cells.clear();
+    };
+    for (unsigned int cell = 0; cell < l.n_cells(); ++cell)
+      if (l.band[cell])
+        {
+          double *column = &sources[cells.size() * nD * nf];
+          std::fill(column, column + nD * nf, 0.);
+          for_near(cell, [&](const unsigned int j, const unsigned int D) {
+            if (l.band[j])
+              std::copy_n(&q_eff[l.first[j]], nf, column + D * nf);
+          });
+          cells.push_back(cell);
+          if (cells.size() == batch)
+            flush();
+        }
+    if (!cells.empty())
+      flush();
   }
 
 

@@ -93,6 +93,11 @@ namespace viscoslide
     convolve(const std::vector<double>              &q_eff,
              const std::vector<std::vector<double>> &edge,
              Vector<double>                         &u) const;
+    // Adds to u at the band's points the near field of the band's
+    // sources.
+    void
+    add_band_near_field(const std::vector<double> &q_eff,
+                        Vector<double>            &u) const;
 
     // A band cell's moments of q_eff: its mean and dipoles (units of H),
     // which the coarse grid carries.

@@ -13,7 +13,7 @@ run, the edit (viscoslide.prm) and the reader (viscoslide.tables).
     scripts/bench_steady_curve [F_hat] [muT] [finest cell] [procs] [reference csv] [keep csv as]
                                                steady_curve()
     scripts/bench_sphere [R_hat]               sphere_curve()
-    scripts/bench_nested [grid] [refinement] ["V_hat list"] ["entry=value; ..."]
+    scripts/bench_nested [grid] [refinement] ["V_hat list" | file] ["entry=value; ..."]
                                                nested_curve()
     scripts/bench_fem3d [meshes] [solvers] [procs]
                                                fem3d()
@@ -284,7 +284,7 @@ def nested_curve(argv):
     """The sphere's friction (parameter_files/sphere_friction.prm, muT 3,
     F_hat 1, R_hat 100) on a boundary-element grid, uniform or nested
     (default nested, Refinement 5), at the given speeds (default the
-    reference's 0.01 to 1000) against the independent reference curve
+    reference's 11 from 0.01 to 1000; "file": the file's own 21) against the independent reference curve
     ../shared/reference/sphere_muT3_F1_R100.csv (or muT 1's where
     "Adhesion/Tabor parameter=1" is given): per speed mu and its
     error, A_hat and its error, the run's energy balance (mu_energy against
@@ -293,7 +293,7 @@ def nested_curve(argv):
     "Section/Entry=value; ..." (e.g. "Loading/Target load=-0.25"; the reference
     is then not the run's, and only the energy balance counts).
 
-        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list"] ["entry=value; ..."]"""
+        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list" | file] ["entry=value; ..."]"""
     prepare()
     grid = argv[0] if argv else 'nested'
     refinement = argv[1] if len(argv) > 1 else '5'
@@ -301,7 +301,9 @@ def nested_curve(argv):
         '0.01, 0.0316228, 0.1, 0.316228, 1, 3.16228, 10, 31.6228, 100, 316.228, 1000'
     work = tempfile.mkdtemp()
     changes = {'Output/Output directory': f'{work}/out', 'Boundary element/Grid': grid,
-               'Boundary element/Refinement': refinement, 'Sliding/Sliding speed': speeds}
+               'Boundary element/Refinement': refinement}
+    if speeds != 'file':
+        changes['Sliding/Sliding speed'] = speeds
     for item in (argv[3].split(';') if len(argv) > 3 else []):
         key, value = item.split('=', 1)
         changes[key.strip()] = value.strip()

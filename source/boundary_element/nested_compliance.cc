@@ -289,8 +289,8 @@ namespace viscoslide
   // The band's sources at band points: for a batch of band cells the
   // sources about each gathered as one column (zeros where a neighbour is
   // coarse), and all offsets' coefficients applied to the batch as one
-  // matrix product (BLAS): the near field fell from 42 % of a run's time,
-  // summed cell by cell, to about 10 % (doc/boundary_element.md).
+  // matrix product (BLAS), faster than the same sums cell by cell
+  // (doc/boundary_element.md).
   void
   NestedCompliance::add_band_near_field(const std::vector<double> &q_eff,
                                         Vector<double>            &u) const

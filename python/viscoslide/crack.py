@@ -38,6 +38,7 @@ at the distance s (upper sign at c2), and G = K^2/2 (a rigid body on the
 half-plane, E0* = 1). Their difference, pi A e/R, is the x force of the
 pressure on the profile: the friction of the crack picture.
 """
+import argparse
 import json
 import math
 import os
@@ -400,29 +401,22 @@ def main(argv=None):
     (by default the largest Tabor parameter's) against the other runs (and
     its curves at the muT:R_hat given, 0.01 to 1000) and the figure
     (FIGURE.png and .pdf) of finished 2D runs, e.g. scripts/bench_graded's."""
-    argv = sys.argv[1:] if argv is None else argv
-    predict = argv[argv.index('--predict') + 1:] if '--predict' in argv else []
-    argv = argv[:argv.index('--predict')] if predict else argv
-    curves_out = None
-    if '--curves' in argv:
-        k = argv.index('--curves')
-        if k + 1 >= len(argv):
-            sys.exit(main.__doc__)
-        curves_out = argv[k + 1]
-        argv = argv[:k] + argv[k + 2:]
-        argv.append(curves_out)
-    if len(argv) < 2:
-        sys.exit(main.__doc__)
-    outs = list(dict.fromkeys(argv[1:]))
+    ap = argparse.ArgumentParser(prog='scripts/edge_cracks', description=main.__doc__)
+    ap.add_argument('figure')
+    ap.add_argument('outs', nargs='+', metavar='OUT_DIR')
+    ap.add_argument('--curves', metavar='OUT_DIR')
+    ap.add_argument('--predict', nargs='+', default=[], metavar='muT:R_hat')
+    a = ap.parse_args(sys.argv[1:] if argv is None else argv)
+    outs = list(dict.fromkeys(a.outs + ([a.curves] if a.curves else [])))
     analysed = {out: analyse(out) for out in outs}
     runs = sorted(analysed.values(), key=lambda rows: (rows[0]['muT'], rows[0]['R_hat']))
     # the curves of the largest Tabor parameter (and R_hat) serve the others
-    curves_run = analysed[curves_out] if curves_out else runs[-1]
+    curves_run = analysed[a.curves] if a.curves else runs[-1]
     for rows in runs:
         print_table(rows)
     print_collapse(runs)
     print_edge_model(curves_run, runs)
-    for case in predict:
+    for case in a.predict:
         muT, R_hat = map(float, case.split(':'))
         print_prediction(curves_run, muT, R_hat, [10 ** (k / 4 - 2) for k in range(21)])
-    figure(runs, argv[0][:-4] if argv[0].endswith('.png') else argv[0])
+    figure(runs, a.figure[:-4] if a.figure.endswith('.png') else a.figure)

@@ -264,7 +264,11 @@ namespace viscoslide
       }
     };
     solution.reinit(rhs.size());
-    SolverControl solver_control(1000, 1e-8 * rhs.l2_norm(), false, false);
+    // GMRES is preconditioned from the left: it measures the preconditioned
+    // residual, and the forcing term of an inexact Newton step is a
+    // reduction of that.
+    ReductionControl solver_control(
+      1000, 1e-8 * rhs.l2_norm(), forcing, false, false);
     SolverGMRES<Vector<double>> gmres(
       solver_control, SolverGMRES<Vector<double>>::AdditionalData(100));
     bool converged = true;
@@ -312,6 +316,7 @@ namespace viscoslide
       return std::max(100. * prm.solver.newton_tolerance, round_off);
     };
     p.compute_update  = [this] { compute_update(); };
+    p.set_forcing     = [this](const double eta) { forcing = eta; };
     p.update_norm     = [this] { return update.l2_norm(); };
     p.update_max_norm = [this] { return update.linfty_norm(); };
     // On a grid that follows the edges: along the nearly singular

@@ -9,6 +9,47 @@
 
 namespace viscoslide
 {
+  namespace
+  {
+    // The forcing term of Eisenstat and Walker (1996, their choice 2): the
+    // linear solve of a step need reduce its residual only as far as the
+    // last Newton step reduced the nonlinear one (squared), so that the
+    // early steps, far from the solution, take few iterations while the
+    // convergence stays superlinear; safeguarded against a sudden drop
+    // (not below 0.9 eta_before^2 while that is above 0.1), at most 0.1,
+    // and never asking for less than a tenth of the Newton tolerance.
+    double
+    forcing_term(const double residual,
+                 const double residual_before,
+                 const double eta_before,
+                 const double tolerance)
+    {
+      constexpr double eta_max = 0.1, gamma = 0.9;
+      double           eta = eta_max;
+      if (residual_before > 0)
+        {
+          const double ratio = residual / residual_before;
+          eta                = gamma * ratio * ratio;
+          const double guard = gamma * eta_before * eta_before;
+          if (guard > 0.1)
+            eta = std::max(eta, guard);
+        }
+      return std::min(eta_max, std::max(eta, 0.1 * tolerance / residual));
+    }
+
+    // Resets the forcing term of a problem when newton() returns.
+    struct ForcingReset
+    {
+      const NewtonProblem &p;
+      ~ForcingReset()
+      {
+        if (p.set_forcing)
+          p.set_forcing(0.);
+      }
+    };
+  } // namespace
+
+
   int
   newton(const NewtonProblem &p,
          const unsigned int   max_iterations,
@@ -20,6 +61,8 @@ namespace viscoslide
     double       residual = p.residual_norm();
     unsigned int crawling = 0; // consecutive steps cut to alpha <= 1/16
     Heartbeat    heartbeat;
+    double       residual_before = 0, eta = 0;
+    ForcingReset reset{p};
     for (unsigned int it = 0; it <= max_iterations; ++it)
       {
         if (!std::isfinite(residual))
@@ -38,6 +81,12 @@ namespace viscoslide
         if (it == max_iterations)
           break;
 
+        if (p.set_forcing)
+          {
+            eta = forcing_term(residual, residual_before, eta, tolerance);
+            p.set_forcing(eta);
+          }
+        residual_before = residual;
         p.compute_update();
         if (!std::isfinite(p.update_norm()))
           {

@@ -331,10 +331,11 @@ namespace viscoslide
     // iterate a line search starts from, the surface dashpot of relax()
     // and its anchor; the rounding error of residual_norm() at the last
     // Jacobian, which Newton's method takes as its tolerance where it is
-    // larger.
+    // larger; the relative tolerance Newton's method asks of the next
+    // linear solve (0: GMRES's own, 1e-8).
     Vector<double> gaps, displacement, traction, tangent, residual, update;
     SurfaceState   start_of_step;
-    double         dashpot = 0, round_off = 0;
+    double         dashpot = 0, round_off = 0, forcing = 0;
     Vector<double> anchor;
     // solve_moving_grid(): the residual's derivative along each motion,
     // the pins' misfits, the motions' update, and the grid and gaps a line

@@ -115,6 +115,11 @@ namespace viscoslide
     // takes the iterate only if so: a nearly singular Jacobian turns a
     // residual at the round-off into a large change of the solution.
     std::function<bool()> update_negligible;
+    // The relative tolerance of the linear solve of the next update
+    // (optional, for an iterative linear solver): newton() sets the
+    // forcing term of the inexact Newton method before each update, 0
+    // when it returns (the solver's own tolerance again).
+    std::function<void(double eta)> set_forcing;
   };
 
   // Where a solver keeps its iterate (the displacements and, under force

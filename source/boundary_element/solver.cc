@@ -316,7 +316,6 @@ namespace viscoslide
       return std::max(100. * prm.solver.newton_tolerance, round_off);
     };
     p.compute_update  = [this] { compute_update(); };
-    p.set_forcing     = [this](const double eta) { forcing = eta; };
     p.update_norm     = [this] { return update.l2_norm(); };
     p.update_max_norm = [this] { return update.linfty_norm(); };
     // On a grid that follows the edges: along the nearly singular
@@ -326,6 +325,8 @@ namespace viscoslide
       p.update_negligible = [this] {
         return update.linfty_norm() <= negligible_update * grid->spacing();
       };
+    if (!grid->preconditioner().nearly_exact())
+      p.set_forcing = [this](const double eta) { forcing = eta; };
     p.remember_iterate = [this] { start_of_step = state; };
     p.step             = [this](const double alpha) {
       state = start_of_step;

@@ -102,6 +102,18 @@ namespace viscoslide
     reset()
     {
     }
+
+    // Whether GMRES on it takes only a few iterations (a factorization of
+    // the window): then Newton's linear solves are solved closely, whose
+    // quadratic convergence saves Newton steps, each of which costs a
+    // Jacobian; otherwise an inexact Newton step (newton.h, set_forcing)
+    // saves iterations (measured on the graded cylinder and on the sphere,
+    // doc/boundary_element.md, Newton's method).
+    virtual bool
+    nearly_exact() const
+    {
+      return false;
+    }
   };
 
 

@@ -53,6 +53,11 @@ namespace viscoslide
     solved(unsigned int iterations, bool converged) override;
     void
     reset() override;
+    bool
+    nearly_exact() const override
+    {
+      return true;
+    }
 
   private:
     class Factorization;

@@ -22,6 +22,13 @@ namespace viscoslide
     void
     check_consistency(const Parameters::AllParameters &p);
 
+    // 'Boundary element/Grid' = automatic: the nested grid on the 3D
+    // half-space where the uniform grid would not resolve the adhesive
+    // zone, the uniform grid elsewhere; 'Refinement' = 0 made the least
+    // that resolves it; the choice said in p.notes.
+    void
+    choose_surface_grid(Parameters::AllParameters &p);
+
     // In 3D, 'Solver/Linear solver' = automatic keeps the direct solver
     // only up to the unknowns whose factors fit the machines' memory; then
     // refuses a finite-element case that fits with neither solver.

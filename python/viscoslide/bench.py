@@ -250,7 +250,8 @@ def compare_columns(path, reference):
 def sphere_curve(argv):
     """The sphere's friction curve (parameter_files/sphere_friction.prm:
     muT 3, F_hat 1, 21 speeds from 0.01 to 1000, approach included) by the
-    3D boundary elements on one process, at R_hat (default 100) with the
+    3D boundary elements' uniform grid (scripts/bench_nested times the
+    nested one) on one process, at R_hat (default 100) with the
     window scaled as the contact, sqrt(R_hat), and the grid spacing too or
     as given (in eps; the file's is 0.5): the wall time, the grid, GMRES
     iterations per Newton step, the rows.
@@ -262,7 +263,8 @@ def sphere_curve(argv):
     spacing = float(argv[1]) if len(argv) > 1 else 0.5 * scale
     work = tempfile.mkdtemp()
     changes = {'Output/Output directory': f'{work}/out', 'Adhesion/R over eps': R_hat,
-               'Geometry/Domain width': 160 * scale, 'Mesh/Finest surface cell': 2 * spacing}
+               'Geometry/Domain width': 160 * scale, 'Mesh/Finest surface cell': 2 * spacing,
+               'Boundary element/Grid': 'uniform'}
     path = prm.override_file('parameter_files/sphere_friction.prm',
                              os.path.join(work, 'run.prm'), changes)
     log = os.path.join(work, 'log')
@@ -467,9 +469,11 @@ CURVE_SPEEDS = '0.01, 0.0316228, 0.1, 0.316228, 1, 3.16228, 10, 31.6228, 100, 31
 
 
 # tests/sphere_fem_adhesive.prm turned into its reference, the 3D boundary
-# elements in a 160-eps window; the grid (Mesh/Finest surface cell) is the
+# elements' uniform grid in a 160-eps window (the grids of the convergence
+# studies that extrapolate it); the grid (Mesh/Finest surface cell) is the
 # caller's.
-SPHERE_FEM_BEM = {'Sliding/Solver': 'boundary-element', 'Sliding/Viscous strain degree': None,
+SPHERE_FEM_BEM = {'Sliding/Solver': 'boundary-element', 'Boundary element/Grid': 'uniform',
+                  'Sliding/Viscous strain degree': None,
                   'Geometry/Domain width': 160, 'Mesh/Mesh grading': None,
                   'Solver/Linear solver': None}
 

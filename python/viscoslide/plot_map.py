@@ -91,7 +91,9 @@ def main(argv):
         ax.set_ylabel(r'$y/R$')
     fig.colorbar(image, ax=list(axes[0]), label=r'$p/\sigma_{max}$ (compression $> 0$)',
                  shrink=0.85)
-    fig.suptitle('contact footprint; black: gap = 1.2 eps')
+    nested = any(m[0].ndim == 1 and 'cell_over_eps' in m[2] for m in maps)
+    fig.suptitle('contact footprint; black: gap = 1.2 eps' +
+                 ('; grey dashed: the band of divided cells' if nested else ''))
     fig.savefig(out, dpi=130, bbox_inches='tight')
     print(out)
 

@@ -15,7 +15,7 @@ namespace viscoslide
       prm.enter_subsection("Boundary element");
       prm.declare_entry(
         "Grid",
-        "uniform",
+        "automatic",
         Patterns::Selection(choice_pattern<GridKind>()),
         "The surface grid of Sliding/Solver = boundary-element. uniform: "
         "points at Grid spacing over a period (Period); graded (plane "
@@ -29,7 +29,10 @@ namespace viscoslide
         "half-space): the isolated window of Grid spacing whose cells "
         "along the contact edge are divided Refinement x Refinement, "
         "remade as the edge moves (doc/boundary_element.md, Nested "
-        "grid).");
+        "grid). automatic: nested on the 3D half-space where the uniform "
+        "grid would put fewer cells across the adhesive zone than the "
+        "nested grid's band is made to (7), uniform elsewhere; the choice "
+        "is said when the case starts.");
       prm.declare_entry("Grid spacing",
                         "0",
                         Patterns::Double(),
@@ -57,11 +60,13 @@ namespace viscoslide
                         Patterns::Double(),
                         "See Period.");
       prm.declare_entry("Refinement",
-                        "3",
+                        "0",
                         Patterns::Integer(),
                         "Grid = nested: each cell of the band along the "
                         "contact edge divided into Refinement x Refinement "
-                        "cells (odd, 3 to 15).");
+                        "cells (odd, 3 to 15). 0: automatic, the least "
+                        "that puts 7 cells across the adhesive zone (at "
+                        "most 15).");
       prm.declare_entry("Band width",
                         "0.5",
                         Patterns::Double(),
@@ -84,9 +89,9 @@ namespace viscoslide
       const long r  = prm.get_integer("Refinement");
       band_width    = prm.get_double("Band width");
       prm.leave_subsection();
-      require(r >= 3 && r <= 15 && r % 2 == 1,
+      require(r == 0 || (r >= 3 && r <= 15 && r % 2 == 1),
               entry("Boundary element", "Refinement", r) +
-                " must be odd, from 3 to 15");
+                " must be odd, from 3 to 15 (or 0: automatic)");
       refinement = r;
       require(band_width >= 0 && std::isfinite(band_width),
               entry("Boundary element", "Band width", band_width) +

@@ -27,6 +27,24 @@ namespace viscoslide
       }
 
 
+      double
+      adhesive_zone(const AllParameters &p)
+      {
+        const Scales s(p);
+        const double softest = std::min(1., 1. / p.material.E0_over_Einf);
+        return M_PI / 8 * softest * s.dgamma / std::pow(s.sigma_max, 2);
+      }
+
+
+      double
+      surface_grid_spacing(const AllParameters &p)
+      {
+        return p.boundary_element.grid_spacing > 0
+                 ? p.boundary_element.grid_spacing
+                 : p.mesh.finest_cell / 2;
+      }
+
+
       bool
       runs_only(const AllParameters                       &p,
                 const std::initializer_list<SlidingSolver> solvers)

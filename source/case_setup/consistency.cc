@@ -62,9 +62,7 @@ namespace viscoslide
         require(p.loading.approach_speed == 0,
                 "'Sliding/Solver' = boundary-element approaches "
                 "quasi-statically: set 'Loading/Approach speed' = 0");
-        const double h = p.boundary_element.grid_spacing > 0
-                           ? p.boundary_element.grid_spacing
-                           : p.mesh.finest_cell / 2;
+        const double h = surface_grid_spacing(p);
         if (p.boundary_element.grid == GridKind::graded)
           {
             check_graded_grid(p, h);

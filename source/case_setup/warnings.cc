@@ -28,16 +28,6 @@ namespace viscoslide
       // 0.0001 for its convergence).
       constexpr double graded_grid_measured_reach = 10000;
 
-      // The cohesive zone of a crack under the law's peak stress, about
-      // (pi/8) E* dgamma / sigma_max^2 on the softer modulus, in eps.
-      double
-      adhesive_zone(const AllParameters &p)
-      {
-        const Scales s(p);
-        const double softest = std::min(1., 1. / p.material.E0_over_Einf);
-        return M_PI / 8 * softest * s.dgamma / std::pow(s.sigma_max, 2);
-      }
-
       // The finest surface cell or grid spacing of the case's solver, in
       // eps, and the entry that sets it.
       std::pair<double, std::string>
@@ -45,9 +35,7 @@ namespace viscoslide
       {
         if (p.sliding.solver != SlidingSolver::boundary_element)
           return {p.mesh.finest_cell, "'Mesh/Finest surface cell'"};
-        const double spacing = p.boundary_element.grid_spacing > 0
-                                 ? p.boundary_element.grid_spacing
-                                 : p.mesh.finest_cell / 2;
+        const double spacing = surface_grid_spacing(p);
         // The nested grid's band, along the contact's edge, is the finest.
         if (p.boundary_element.grid == GridKind::nested)
           return {spacing / p.boundary_element.refinement,

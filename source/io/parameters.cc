@@ -40,6 +40,7 @@ namespace viscoslide
       units.parse(prm);
       solver.verbose = output.verbosity == Verbosity::verbose;
       apply_units(*this);
+      CaseSetup::choose_surface_grid(*this);
       CaseSetup::check_consistency(*this);
       // The memory is counted on the block that will be meshed.
       CaseSetup::fit_block_to_wake(*this);

@@ -16,13 +16,16 @@ namespace viscoslide
 {
   namespace Parameters
   {
+    // automatic is resolved when the case is read
+    // (CaseSetup::choose_surface_grid): no grid is made as 'automatic'.
     enum class GridKind
     {
       uniform,
       graded,
-      nested
+      nested,
+      automatic
     };
-    VISCOSLIDE_CHOICES(GridKind, "uniform", "graded", "nested")
+    VISCOSLIDE_CHOICES(GridKind, "uniform", "graded", "nested", "automatic")
 
     struct BoundaryElement
     {
@@ -31,8 +34,8 @@ namespace viscoslide
       double       grading_ratio; // of neighbouring cells of the graded grid
       double       period;        // eps; 0: automatic
       double       wake_periods;  // the automatic period, in V tau_c
-      unsigned int refinement;    // of the nested grid's band cells
-      double       band_width;    // eps, of the nested grid's band
+      unsigned int refinement; // of the nested grid's band cells; 0: automatic
+      double       band_width; // eps, of the nested grid's band
 
       static void
       declare(ParameterHandler &prm);

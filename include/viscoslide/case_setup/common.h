@@ -33,6 +33,15 @@ namespace viscoslide
       double
       hertz_half_width(double F_hat, double E_star, const AllParameters &p);
 
+      // The cohesive zone of a crack under the law's peak stress, about
+      // (pi/8) E* dgamma / sigma_max^2 on the softer modulus, in eps.
+      double
+      adhesive_zone(const AllParameters &p);
+      // The boundary elements' Grid spacing, in eps: the entry, or half
+      // the Finest surface cell where it is 0.
+      double
+      surface_grid_spacing(const AllParameters &p);
+
       // Whether every case runs one of `solvers`: the solver, and every one
       // a sweep lists.
       bool

@@ -37,6 +37,44 @@ namespace viscoslide
       return std::min(eta_max, std::max(eta, 0.1 * tolerance / residual));
     }
 
+    // Backtracking along the update from alpha = 1 (a single step without
+    // line search) to the first step that reduces the residual enough:
+    // that step, the residual there, and whether it was found.
+    struct LineSearch
+    {
+      double alpha, residual;
+      bool   reduced;
+    };
+    LineSearch
+    search_line(const NewtonProblem &p,
+                const double         residual,
+                const bool           line_search,
+                const bool           verbose,
+                ConditionalOStream  &out)
+    {
+      double alpha = 1.;
+      for (unsigned int k = 0; k < (line_search ? 8 : 1); ++k)
+        {
+          p.step(alpha);
+          p.assemble(false);
+          const double r = p.residual_norm();
+          if (verbose && line_search)
+            out << "        trial alpha = " << alpha << ": residual " << r
+                << std::endl;
+          if (std::isfinite(r) &&
+              (r < (1. - 1e-4 * alpha) * residual || !line_search))
+            {
+              if (verbose)
+                out << "        line search: alpha = " << alpha << std::endl;
+              return {alpha, r, true};
+            }
+          alpha *= 0.5;
+        }
+      if (verbose)
+        out << "        line search: alpha = " << alpha << std::endl;
+      return {alpha, residual, false};
+    }
+
     // Resets the forcing term of a problem when newton() returns.
     struct ForcingReset
     {
@@ -81,11 +119,9 @@ namespace viscoslide
         if (it == max_iterations)
           break;
 
+        eta = forcing_term(residual, residual_before, eta, tolerance);
         if (p.set_forcing)
-          {
-            eta = forcing_term(residual, residual_before, eta, tolerance);
-            p.set_forcing(eta);
-          }
+          p.set_forcing(eta);
         residual_before = residual;
         p.compute_update();
         if (!std::isfinite(p.update_norm()))
@@ -102,30 +138,10 @@ namespace viscoslide
         // eps and more): that is the equilibrium if the update is as small
         // as that round-off explains.
         p.remember_iterate();
-        double       alpha     = 1.;
-        bool         reduced   = false;
-        double       trial     = residual;
-        const double round_off = 10 * tolerance;
-        for (unsigned int k = 0; k < (line_search ? 8 : 1); ++k)
-          {
-            p.step(alpha);
-            p.assemble(false);
-            const double r = p.residual_norm();
-            if (verbose && line_search)
-              out << "        trial alpha = " << alpha << ": residual " << r
-                  << std::endl;
-            if (std::isfinite(r) &&
-                (r < (1. - 1e-4 * alpha) * residual || !line_search))
-              {
-                reduced = true;
-                trial   = r;
-                break;
-              }
-            alpha *= 0.5;
-          }
-        if (verbose)
-          out << "        line search: alpha = " << alpha << std::endl;
-        const bool negligible = !p.update_negligible || p.update_negligible();
+        const auto [alpha, trial, reduced] =
+          search_line(p, residual, line_search, verbose, out);
+        const double round_off  = 10 * tolerance;
+        const bool   negligible = !p.update_negligible || p.update_negligible();
         if (!reduced)
           {
             if (residual > round_off || !negligible)

@@ -68,8 +68,12 @@ namespace viscoslide
           r      = std::clamp(r + (r % 2 == 0 ? 1 : 0), 3L, finest_refinement);
           b.refinement = static_cast<unsigned int>(r);
           std::ostringstream note;
-          note << "Note: 'Boundary element/Refinement' = 0: the nested "
+          note << std::setprecision(3)
+               << "Note: 'Boundary element/Refinement' = 0: the nested "
                << "grid's band cells divided " << r << " x " << r;
+          if (std::isfinite(across))
+            note << ", " << r * across << " fine cells across the adhesive "
+                 << "zone";
           p.notes.push_back(note.str());
         }
     }

@@ -10,6 +10,7 @@
 #include <viscoslide/boundary_element/nested_grid.h>
 #include <viscoslide/boundary_element/periodic_grid.h>
 #include <viscoslide/boundary_element/solver.h>
+#include <viscoslide/case_setup/common.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,9 +24,7 @@ namespace viscoslide
   {
     const auto  &prm = parts.prm;
     const double dx =
-      (prm.boundary_element.grid_spacing > 0 ? prm.boundary_element.grid_spacing
-                                             : prm.mesh.finest_cell / 2) *
-      parts.scales.eps;
+      CaseSetup::internal::surface_grid_spacing(prm) * parts.scales.eps;
     const auto &s = parts.scales;
     const auto &m = parts.material;
     const auto &i = *parts.indenter;

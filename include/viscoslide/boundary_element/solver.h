@@ -226,8 +226,9 @@ namespace viscoslide
     // a grid: the step taken on the coarse grid, whose change in the
     // displacements (smooth, where the gaps are not) is added to at_state
     // (nested iteration, as Brandt's full multigrid starts each level from
-    // the coarser one). The grid is left as it was; false where the
-    // coarse grid fails or there is none.
+    // the coarser one); the band is then made about the predicted contact
+    // where it has left the refined cells. False where the coarse grid
+    // fails or there is none (the grid and state then as they were).
     bool
     predict_on_coarse(double                             at,
                       double                             next,

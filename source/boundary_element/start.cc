@@ -8,6 +8,7 @@
 
 #include <viscoslide/boundary_element/grid.h>
 #include <viscoslide/boundary_element/solver.h>
+#include <viscoslide/case_setup/common.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,8 +48,12 @@ namespace viscoslide
          {"n_dofs", std::to_string(n_unknowns())}});
     };
     // A grid that follows the contact has no contact to follow before
-    // there is one: it starts from the JKR contact.
-    if (grid->follows_contact())
+    // there is one: it starts from the JKR contact. So does the sphere on
+    // a grid that refines about the contact where the load is all the case
+    // asks of the approach: on its coarse cells the jump into a contact
+    // hundreds of cells wide relaxes slowly, and not at all where the
+    // adhesive zone is a fraction of a cell.
+    if (grid->follows_contact() || starts_from_jkr_sphere())
       {
         start_from_jkr_contact();
         add_row("load");
@@ -65,6 +70,13 @@ namespace viscoslide
     const double F    = prm.loading.target_load * scales.force;
     bool         done = false;
     grid->fit_to_speed(0., state);
+    set_law_range(approach_law_range());
+    if (law_range > scales.eps)
+      pcout << "Approach with the law's range " << law_range / scales.eps
+            << " eps (the same work of adhesion): the grid's cells are too "
+               "coarse for the jump into contact with the adhesive zone at "
+               "eps"
+            << std::endl;
     control.hold_approach();
     state.set_approach(prm.loading.initial_approach * scales.eps);
     if (solve() < 0)
@@ -88,7 +100,7 @@ namespace viscoslide
             << "]" << std::endl;
       done =
         prm.loading.has_target_load() &&
-        last_quantities.minimum_gap < prm.adhesion.contact_gap * scales.eps &&
+        last_quantities.minimum_gap < prm.adhesion.contact_gap * law_range &&
         last_quantities.normal_force >= F;
     };
     move_indenter(prm.loading.final_approach, "approach", report, [&done] {
@@ -96,6 +108,8 @@ namespace viscoslide
     });
     if (prm.loading.has_target_load())
       hold_target_load(done, add_row);
+    if (law_range > scales.eps)
+      settle_law_range(add_row);
     if (prm.loading.retract)
       {
         control.hold_approach();
@@ -130,6 +144,41 @@ namespace viscoslide
   }
 
 
+  // The zone's width grows as the law's range squared at the same dgamma
+  // (adhesive_zone, case_setup/common.h), the contact hardly (JKR's
+  // depends on dgamma alone): a range that puts min_approach_cells across
+  // the zone lets the jump into contact converge on coarse cells.
+  template <int dim>
+  double
+  BoundaryElementSolver<dim>::approach_law_range() const
+  {
+    const double zone = CaseSetup::internal::adhesive_zone(prm) * scales.eps;
+    return scales.eps *
+           std::max(1., std::sqrt(min_approach_cells * grid->spacing() / zone));
+  }
+
+
+  // At the load reached (the Target load, or under displacement control the
+  // force at the Final approach, held while the range shrinks and then the
+  // Final approach taken again), on the grid refined about the contact.
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::settle_law_range(const AddRow &add_row)
+  {
+    const bool held = control.force_controlled;
+    if (!held)
+      control.hold_force(last_quantities.normal_force);
+    grid->refine_at_rest();
+    shrink_law_range(law_range, "after the approach");
+    if (!held)
+      {
+        control.hold_approach();
+        move_indenter(prm.loading.final_approach, "approach", [] {});
+      }
+    add_row("load");
+  }
+
+
   // Unloading in steps of the Approach increment down to Retract to; the
   // minimum force on the way is the pull-off force under displacement
   // control. The jump out of contact is relaxed as the jump in is.
@@ -149,26 +198,90 @@ namespace viscoslide
 
 
   template <int dim>
+  bool
+  BoundaryElementSolver<dim>::starts_from_jkr_sphere() const
+  {
+    return dim == 3 && grid->refines_about_contact() &&
+           prm.loading.has_target_load() && !prm.loading.retract &&
+           prm.indenter.shape == "parabola" && prm.geometry.elongation == 1.;
+  }
+
+
+  template <int dim>
   void
   BoundaryElementSolver<dim>::start_from_jkr_contact()
   {
-    // The JKR contact in plane strain (cylinder_jkr_half_width, grid.h) of
-    // the relaxed solid (E0* = 1) gives the contact's width 2a.
+    // The JKR contact of the relaxed solid (E0* = 1): its width 2a in
+    // plane strain (cylinder_jkr_half_width, grid.h), its radius on the
+    // sphere.
     const double P = prm.loading.target_load * scales.force;
-    const double a = cylinder_jkr_half_width(P, scales.dgamma, scales.R);
+    const double a = dim == 2
+                       ? cylinder_jkr_half_width(P, scales.dgamma, scales.R)
+                       : sphere_jkr_radius(P, scales.dgamma, scales.R);
     if (!std::isfinite(a))
       throw Parameters::ExcInvalidInput(
         "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
-        " is below the JKR pull-off force of the relaxed contact: "
-        "'Boundary element/Grid' = graded starts from the JKR contact");
+        " is below the JKR pull-off force of the relaxed contact, from which "
+        "the start on this grid is made");
+    Vector<double> q;
+    double delta = dim == 2 ? discrete_jkr_contact(a, P, q) : jkr_sphere(a, q);
+    Vector<double> u;
+    grid->apply(q, u);
+    // Newton's method from this contact converges for Tabor parameters up
+    // to about 10, and crawls beyond (the adhesive zone must form at each
+    // edge, a short-range jump); on a grid whose cells are coarse for the
+    // zone it does not converge at all (approach_law_range). A larger one
+    // is reached by continuation in the law's range: the same law with
+    // range l > eps and the same dgamma, so that the contact is nearly the
+    // same (JKR's depends on dgamma alone) while the zone is l^2 times
+    // wider; l then shrinks to eps in steps of 0.7, each equilibrium the
+    // start of the next.
+    const double range = std::max(approach_law_range(),
+                                  scales.eps * prm.adhesion.tabor_parameter /
+                                    start_tabor_parameter);
+    set_law_range(range);
+    // The contact at the law's equilibrium gap, the range.
+    state.delta = delta - (range - scales.eps);
+    state.set_displacement(u, grid->at().h, scales.eps);
+    // Inside, the gap at which the law gives that traction (at most its
+    // peak), so that the residual u - C q(g) starts small.
+    const auto start_gap = gap_for_traction(traction_law(), range);
+    for (unsigned int j = 0; j < q.size(); ++j)
+      if (q[j] != 0.)
+        state.gap[j] = start_gap(q[j]);
+    control.hold_force(P);
+    pcout << "Start: the JKR contact of the relaxed solid at F_hat = "
+          << prm.loading.target_load << ", " << contact_column(dim) << " = "
+          << (dim == 2 ? 2 * a / scales.R : M_PI * a * a / scales.contact);
+    if (range > scales.eps)
+      pcout << ", the law's range from " << range / scales.eps << " eps";
+    pcout << std::endl;
+    // A law wider than the case's is shrunk where its zone is resolved: on
+    // a grid that refines about the contact, that refined at rest. With
+    // the case's own law the rest state stays on the coarse cells, and the
+    // band is made about the first speed's contact (a band about the rest
+    // contact is a cell off the trailing edge's zone at V_hat 0.01, which
+    // puts mu 1 % lower on 0.5-eps cells divided 5 x 5).
+    if (range > scales.eps)
+      grid->refine_at_rest();
+    shrink_law_range(range, "from the JKR contact at the Target load");
+  }
+
+
+  // On the grid about the contact, the traction of the points |x_j| < a
+  // that holds their gap at eps (u_j = h_j - delta) under the load P, delta
+  // unknown: the discrete JKR contact, its adhesive edges from the width
+  // alone. The displacements are thousands of eps at R_hat 1e6, so that
+  // the state must come from the grid's own compliance to be within a
+  // fraction of eps of an equilibrium. Those points are the contiguous
+  // [first, first + m) of the sorted x. Returns delta.
+  template <int dim>
+  double
+  BoundaryElementSolver<dim>::discrete_jkr_contact(const double    a,
+                                                   const double    P,
+                                                   Vector<double> &q)
+  {
     grid->place_about(-a, a, state);
-    // On the grid, the traction of the points |x_j| < a that holds their
-    // gap at eps (u_j = h_j - delta) under the load P, delta unknown: the
-    // discrete JKR contact, its adhesive edges from the width alone. The
-    // displacements are thousands of eps at R_hat 1e6, so that the state
-    // must come from the grid's own compliance to be within a fraction of
-    // eps of an equilibrium. Those points are the contiguous [first, first
-    // + m) of the sorted x.
     const auto        &p = grid->at();
     const unsigned int first =
       std::lower_bound(p.x.begin(), p.x.end(), -a) - p.x.begin();
@@ -188,50 +301,61 @@ namespace viscoslide
     rhs[m] = P / scales.sigma_max;
     system.compute_lu_factorization();
     system.solve(rhs);
-    Vector<double> q(grid->size());
+    q.reinit(grid->size());
     for (unsigned int i = 0; i < m; ++i)
       q[first + i] = rhs[i];
-    state.delta = rhs[m];
+    return rhs[m];
+  }
+
+
+  // Johnson, Kendall and Roberts' pressure on the paraboloid's contact of
+  // radius a (Johnson, Contact Mechanics, 5.4), the Hertz part and the
+  // flat punch's adhesive one,
+  //     p(r) = (2a/(pi R)) s - sqrt(2 dgamma/(pi a)) / s,  s = sqrt(1 -
+  //     r^2/a^2),
+  // at the points (the adhesive part's edge singularity cut at half a cell
+  // from the edge). Returns delta, the mean of h - u over the contact,
+  // whose points the traction holds near the surface.
+  template <int dim>
+  double
+  BoundaryElementSolver<dim>::jkr_sphere(const double a, Vector<double> &q)
+  {
+    grid->fit_to_speed(0., state);
+    const auto  &p   = grid->at();
+    const double cut = std::min(1., grid->spacing() / a);
+    q.reinit(grid->size());
+    for (unsigned int j = 0; j < q.size(); ++j)
+      {
+        const double rho2 = (p.x[j] * p.x[j] + p.y[j] * p.y[j]) / (a * a);
+        if (rho2 >= 1)
+          continue;
+        const double s = std::sqrt(std::max(1 - rho2, cut));
+        q[j]           = -(2 * a / (M_PI * scales.R) * s -
+                 std::sqrt(2 * scales.dgamma / (M_PI * a)) / s);
+      }
     Vector<double> u;
     grid->apply(q, u);
-    // Newton's method from this contact converges for Tabor parameters up
-    // to about 10, and crawls beyond (the adhesive zone must form at each
-    // edge, a short-range jump). A larger one is reached by continuation
-    // in the law's range: the same law with range l > eps and the same
-    // dgamma, so that the contact is nearly the same (JKR's depends on
-    // dgamma alone) while the zone is l^(3/2) times wider; l then shrinks
-    // to eps in steps of 0.7, each equilibrium the start of the next.
-    const double range =
-      scales.eps *
-      std::max(1., prm.adhesion.tabor_parameter / start_tabor_parameter);
-    set_law_range(range);
-    // The contact at the law's equilibrium gap, the range.
-    state.delta -= range - scales.eps;
-    state.set_displacement(u, p.h, scales.eps);
-    // Inside, the gap at which the law gives that traction (at most its
-    // peak), so that the residual u - C q(g) starts small.
-    const auto start_gap = gap_for_traction(traction_law(), range);
-    for (unsigned int j = first; j < first + m; ++j)
-      state.gap[j] = start_gap(q[j]);
-    control.hold_force(P);
-    pcout << "Start: the JKR contact of the relaxed solid at F_hat = "
-          << prm.loading.target_load << ", L_hat = " << 2 * a / scales.R;
-    if (range > scales.eps)
-      pcout << ", the law's range from " << range / scales.eps << " eps";
-    pcout << std::endl;
-    shrink_law_range(range);
+    double sum = 0, n = 0;
+    for (unsigned int j = 0; j < q.size(); ++j)
+      if (q[j] != 0.)
+        {
+          sum += p.h[j] - u[j];
+          n += 1;
+        }
+    return sum / n;
   }
 
 
   template <int dim>
   void
-  BoundaryElementSolver<dim>::shrink_law_range(double range)
+  BoundaryElementSolver<dim>::shrink_law_range(double             range,
+                                               const std::string &from)
   {
-    const auto fail = [this](const double at) {
+    const auto fail = [this, &from](const double at) {
       return std::runtime_error(
-        "the boundary-element solver found no equilibrium from the JKR "
-        "contact at the Target load (Newton's method and the relaxation "
-        "did not converge on the graded grid at the law's range " +
+        "the boundary-element solver found no equilibrium " + from +
+        " (Newton's method and the relaxation did not converge at the "
+        "law's range " +
         CsvTable::format(at / scales.eps) + " eps)");
     };
     if (solve() < 0)
@@ -273,8 +397,9 @@ namespace viscoslide
         if (last_resort)
           throw fail(next);
         set_law_range(range);
-        state.delta = at_state.delta;
-        grid->place(*placement_at, gaps_at, state);
+        if (placement_at)
+          grid->regrid(*placement_at, state);
+        state = at_state;
         assemble(false); // the gaps and tractions the next step starts from
         factor = std::sqrt(factor);
       }
@@ -319,17 +444,20 @@ namespace viscoslide
 
   // The class is instantiated in solver.cc; here the members this file
   // defines.
-#define VISCOSLIDE_INSTANTIATE(dim)                                            \
-  template void BoundaryElementSolver<dim>::start();                           \
-  template void BoundaryElementSolver<dim>::approach_phase(const AddRow &);    \
-  template void BoundaryElementSolver<dim>::hold_target_load(bool,             \
-                                                             const AddRow &);  \
-  template void BoundaryElementSolver<dim>::retract(const AddRow &);           \
-  template void BoundaryElementSolver<dim>::start_from_jkr_contact();          \
-  template void BoundaryElementSolver<dim>::shrink_law_range(double);          \
-  template std::function<double(double)>                                       \
-  BoundaryElementSolver<dim>::gap_for_traction(const InteractionLaw &, double) \
-    const;                                                                     \
+#define VISCOSLIDE_INSTANTIATE(dim)                                             \
+  template void   BoundaryElementSolver<dim>::start();                          \
+  template void   BoundaryElementSolver<dim>::approach_phase(const AddRow &);   \
+  template void   BoundaryElementSolver<dim>::hold_target_load(bool,            \
+                                                             const AddRow &); \
+  template void   BoundaryElementSolver<dim>::retract(const AddRow &);          \
+  template void   BoundaryElementSolver<dim>::start_from_jkr_contact();         \
+  template double BoundaryElementSolver<dim>::approach_law_range() const;       \
+  template void   BoundaryElementSolver<dim>::settle_law_range(const AddRow &); \
+  template void   BoundaryElementSolver<dim>::shrink_law_range(                 \
+    double, const std::string &);                                             \
+  template std::function<double(double)>                                        \
+  BoundaryElementSolver<dim>::gap_for_traction(const InteractionLaw &, double)  \
+    const;                                                                      \
   template void BoundaryElementSolver<dim>::set_law_range(double);
   VISCOSLIDE_INSTANTIATE(2)
   VISCOSLIDE_INSTANTIATE(3)

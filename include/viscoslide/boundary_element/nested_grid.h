@@ -66,6 +66,16 @@ namespace viscoslide
     void
     fit_to_speed(double V_hat, SurfaceState &state) override;
     bool
+    refines_about_contact() const override
+    {
+      return true;
+    }
+    void
+    refine_at_rest() override
+    {
+      refining = true;
+    }
+    bool
     follow(const SurfaceQuantities &q,
            const Vector<double>    &traction,
            bool                     always,

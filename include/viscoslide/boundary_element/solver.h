@@ -282,13 +282,33 @@ namespace viscoslide
     hold_target_load(bool reached, const AddRow &add_row);
     void
     retract(const AddRow &add_row);
-    // The JKR contact of the relaxed solid at the Target load, solved with
-    // the traction law: a grid about it, the discrete JKR contact of the
-    // grid's compliance, then the law's range shrunk to eps.
+    // Whether the case starts from the JKR contact of the sphere (start).
+    bool
+    starts_from_jkr_sphere() const;
+    // The JKR contact of the relaxed solid at the Target load: on the 2D
+    // grid about it the discrete JKR contact of the grid's compliance, on
+    // the 3D grid Johnson's pressure; then the law's range shrunk to eps.
     void
     start_from_jkr_contact();
+    // The tractions q of the two and delta (returned).
+    double
+    discrete_jkr_contact(double a, double P, Vector<double> &q);
+    double
+    jkr_sphere(double a, Vector<double> &q);
+    // The law's range in the approach: eps, or wider where the grid's
+    // cells would put fewer than min_approach_cells across the adhesive
+    // zone (approach_phase).
+    double
+    approach_law_range() const;
+    // After an approach with a wider law: the law's range shrunk to eps at
+    // the load reached, on the grid refined about the contact.
     void
-    shrink_law_range(double range);
+    settle_law_range(const AddRow &add_row);
+    // The law's range shrunk from `range` to eps in steps, each
+    // equilibrium the start of the next; `from` says from which state, for
+    // the message of a failure.
+    void
+    shrink_law_range(double range, const std::string &from);
     // The start's continuation in the traction law's range: the law of
     // the case with range `range` and the same dgamma; the case's own at
     // eps.
@@ -307,6 +327,10 @@ namespace viscoslide
     // The Tabor parameter up to which Newton's method converges from the
     // discrete JKR contact.
     static constexpr double start_tabor_parameter = 8;
+    // The fewest cells across the adhesive zone with which the jump into
+    // contact converges: 1.43 did (Tabor parameter 3 on 0.5-eps cells),
+    // 0.24 did not (10 on the same cells).
+    static constexpr double min_approach_cells = 1.4;
 
     const Parameters::AllParameters &prm;
     MPI_Comm                         comm;

@@ -223,6 +223,19 @@ namespace viscoslide
       return false;
     }
 
+    // A grid that refines about the contact only from the first speed on
+    // (the nested grid's band; the approach runs on its coarse cells), and
+    // refining from now on, at rest.
+    virtual bool
+    refines_about_contact() const
+    {
+      return false;
+    }
+    virtual void
+    refine_at_rest()
+    {
+    }
+
     // --- A grid that follows the contact (its points placed about the
     // contact edges); a fixed grid ignores all of this.
 

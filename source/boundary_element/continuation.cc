@@ -239,18 +239,30 @@ namespace viscoslide
         // thousands of eps wide, and the creep at its edges moves them by
         // many cells in a direct jump, where Newton's method fails and the
         // relaxation takes minutes: it starts slow.
+        // A band refined about the rest contact (start.cc) is kept while
+        // the first speed's zone lies within it, a cell off its middle at
+        // the trailing edge, where the error of the nested grid's
+        // coarse-fine border reaches the zone: the band is made again
+        // about the first speed's contact.
+        const bool band_at_rest = grid->coarse_placement() != nullptr;
+        const auto first_speed  = [&] {
+          if (band_at_rest &&
+              grid->follow(last_quantities, traction, true, state))
+            solve();
+          on_converged();
+        };
         if (!grid->follows_contact())
           {
             set(std::log(target));
             if (solve() >= 0)
               {
-                on_converged();
+                first_speed();
                 return true;
               }
           }
         if (!start_sliding(target))
           return false;
-        on_converged();
+        first_speed();
       }
     // A line per step short of the target: from a slow start the
     // continuation crosses decades before the first station.

@@ -389,8 +389,8 @@ namespace viscoslide
             range  = next;
             factor = std::max(0.7, factor * factor);
             pcout << "  the law's range " << range / scales.eps << " eps, "
-                  << state.gap.size() << " cells, L_hat = "
-                  << last_quantities.contact_length / scales.contact
+                  << state.gap.size() << " points, " << contact_column(dim)
+                  << " = " << last_quantities.contact_length / scales.contact
                   << std::endl;
             continue;
           }

@@ -137,9 +137,11 @@ namespace viscoslide
     residual[n] = control.force_controlled
                     ? control.mismatch(Fn, state.delta) / scales.sigma_max
                     : 0.;
-    if (with_matrix && grid->positive_compliance())
+    if (with_matrix && round_off_due && grid->positive_compliance())
       {
-        // The residual's rounding error: the gaps' last digits times the
+        // The residual's rounding error, once per solve (it costs a
+        // product with C, an eighth of a Newton step on the 3D grids, and
+        // changes little between steps): the gaps' last digits times the
         // repulsive wall's stiffness, a traction that the coarse cells'
         // compliance magnifies, and u's own (at R_hat 1e6 and more u is
         // 1e4 eps). Where the compliance is positive, C|v| sums the
@@ -157,7 +159,8 @@ namespace viscoslide
                             (std::abs(u[j]) + std::abs(p.h[j]) +
                              std::abs(state.delta) + C_magnitude[j]),
                           2);
-        round_off = std::sqrt(sum / n) / scales.eps;
+        round_off     = std::sqrt(sum / n) / scales.eps;
+        round_off_due = false;
       }
     if (with_matrix)
       {
@@ -379,7 +382,8 @@ namespace viscoslide
   {
     const SurfaceState  start_state = state;
     const NewtonProblem problem     = newton_problem();
-    const auto          restart     = [&] {
+    round_off_due                   = true;
+    const auto restart              = [&] {
       state = start_state;
       grid->preconditioner().reset();
     };

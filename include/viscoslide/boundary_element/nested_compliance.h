@@ -42,7 +42,7 @@ namespace viscoslide
     // The near field's reach and the interpolation's order of the grids
     // (tests/nested_compliance_check.cc measures them), and how far a band
     // cell must stay from the window's border.
-    static constexpr unsigned int default_near = 3, default_order = 2,
+    static constexpr unsigned int default_near = 2, default_order = 2,
                                   margin = default_near + default_order + 1;
 
     // `window` is the compliance of the layout's coarse cells, which its

@@ -361,6 +361,7 @@ namespace viscoslide
     Vector<double> gaps, displacement, traction, tangent, residual, update;
     SurfaceState   start_of_step;
     double         dashpot = 0, round_off = 0, forcing = 0;
+    bool           round_off_due = true; // round_off made at a solve's start
     Vector<double> anchor;
     // solve_moving_grid(): the residual's derivative along each motion,
     // the pins' misfits, the motions' update, and the grid and gaps a line

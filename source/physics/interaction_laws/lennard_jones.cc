@@ -18,14 +18,14 @@ namespace viscoslide
   double
   LennardJones::raw_traction(const double g) const
   {
-    const double r3 = std::pow(eps / g, 3);
+    const double r = eps / g, r3 = r * r * r; // not pow: 4 % of a 3D curve
     return 8. * dgamma / (3. * eps) * (r3 - r3 * r3 * r3);
   }
 
   double
   LennardJones::raw_derivative(const double g) const
   {
-    const double r3 = std::pow(eps / g, 3);
+    const double r = eps / g, r3 = r * r * r;
     return 8. * dgamma / (3. * eps) * (-3. * r3 + 9. * r3 * r3 * r3) / g;
   }
 

@@ -324,11 +324,15 @@ namespace viscoslide
     for (unsigned int cell = 0; cell < l.n_cells(); ++cell)
       if (l.band[cell])
         {
+          // Every offset of a band cell lies in the window (margin), so
+          // each block of the column is written once: the source cell's
+          // values, or zeros for a coarse one.
           double *column = &sources[cells.size() * nD * nf];
-          std::fill(column, column + nD * nf, 0.);
           for_near(cell, [&](const unsigned int j, const unsigned int D) {
             if (l.band[j])
               std::copy_n(&q_eff[l.first[j]], nf, column + D * nf);
+            else
+              std::fill_n(column + D * nf, nf, 0.);
           });
           cells.push_back(cell);
           if (cells.size() == batch)

@@ -223,10 +223,9 @@ namespace viscoslide
         "'Loading/Target load' = " + CsvTable::format(prm.loading.target_load) +
         " is below the JKR pull-off force of the relaxed contact, from which "
         "the start on this grid is made");
-    Vector<double> q;
-    double delta = dim == 2 ? discrete_jkr_contact(a, P, q) : jkr_sphere(a, q);
-    Vector<double> u;
-    grid->apply(q, u);
+    Vector<double> q, u;
+    const double   delta =
+      dim == 2 ? discrete_jkr_contact(a, P, q, u) : jkr_sphere(a, q, u);
     // Newton's method from this contact converges for Tabor parameters up
     // to about 10, and crawls beyond (the adhesive zone must form at each
     // edge, a short-range jump); on a grid whose cells are coarse for the
@@ -279,7 +278,8 @@ namespace viscoslide
   double
   BoundaryElementSolver<dim>::discrete_jkr_contact(const double    a,
                                                    const double    P,
-                                                   Vector<double> &q)
+                                                   Vector<double> &q,
+                                                   Vector<double> &u)
   {
     grid->place_about(-a, a, state);
     const auto        &p = grid->at();
@@ -304,6 +304,7 @@ namespace viscoslide
     q.reinit(grid->size());
     for (unsigned int i = 0; i < m; ++i)
       q[first + i] = rhs[i];
+    grid->apply(q, u);
     return rhs[m];
   }
 
@@ -311,14 +312,16 @@ namespace viscoslide
   // Johnson, Kendall and Roberts' pressure on the paraboloid's contact of
   // radius a (Johnson, Contact Mechanics, 5.4), the Hertz part and the
   // flat punch's adhesive one,
-  //     p(r) = (2a/(pi R)) s - sqrt(2 dgamma/(pi a)) / s,  s = sqrt(1 -
-  //     r^2/a^2),
+  //     p(r) = (2a/(pi R)) s - sqrt(2 dgamma/(pi a)) / s,
+  // s = sqrt(1 - r^2/a^2),
   // at the points (the adhesive part's edge singularity cut at half a cell
   // from the edge). Returns delta, the mean of h - u over the contact,
   // whose points the traction holds near the surface.
   template <int dim>
   double
-  BoundaryElementSolver<dim>::jkr_sphere(const double a, Vector<double> &q)
+  BoundaryElementSolver<dim>::jkr_sphere(const double    a,
+                                         Vector<double> &q,
+                                         Vector<double> &u)
   {
     grid->fit_to_speed(0., state);
     const auto  &p   = grid->at();
@@ -333,7 +336,6 @@ namespace viscoslide
         q[j]           = -(2 * a / (M_PI * scales.R) * s -
                  std::sqrt(2 * scales.dgamma / (M_PI * a)) / s);
       }
-    Vector<double> u;
     grid->apply(q, u);
     double sum = 0, n = 0;
     for (unsigned int j = 0; j < q.size(); ++j)

@@ -290,11 +290,15 @@ namespace viscoslide
     // the 3D grid Johnson's pressure; then the law's range shrunk to eps.
     void
     start_from_jkr_contact();
-    // The tractions q of the two and delta (returned).
+    // The tractions q of the two, their displacements u = C q, and delta
+    // (returned).
     double
-    discrete_jkr_contact(double a, double P, Vector<double> &q);
+    discrete_jkr_contact(double          a,
+                         double          P,
+                         Vector<double> &q,
+                         Vector<double> &u);
     double
-    jkr_sphere(double a, Vector<double> &q);
+    jkr_sphere(double a, Vector<double> &q, Vector<double> &u);
     // The law's range in the approach: eps, or wider where the grid's
     // cells would put fewer than min_approach_cells across the adhesive
     // zone (approach_phase).

@@ -243,65 +243,47 @@ namespace viscoslide
     coarse.convolve(carried_traction, edge, U);
 
     u.reinit(l.size());
-    const unsigned int nf = l.r * l.r, nD = (2 * near + 1) * (2 * near + 1),
-                       nP = (2 * order + 1) * (2 * order + 1);
-    const int p           = order;
+    const unsigned int nf = l.r * l.r;
     for (unsigned int cell = 0; cell < l.n_cells(); ++cell)
-      {
-        if (!l.band[cell])
-          {
-            double v = U[cell];
-            if (near_band[cell])
-              for_near(cell, [&](const unsigned int j, const unsigned int D) {
-                if (l.band[j])
-                  {
-                    const double *a = &coarse_from_band[D * nf];
-                    const double *q = &q_eff[l.first[j]];
-                    for (unsigned int f = 0; f < nf; ++f)
-                      v += a[f] * q[f];
-                  }
-              });
-            u[l.first[cell]] = v;
-            continue;
-          }
-        double *const u_cell = &u[l.first[cell]];
-        // The far field, interpolated from the coarse points about the
-        // cell.
-        for (unsigned int t = 0; t < nf; ++t)
-          {
-            double        v = 0;
-            const double *w = &interpolation[t * nP];
-            for (int a = -p; a <= p; ++a)
-              for (int b = -p; b <= p; ++b)
-                v += *w++ * U[cell + a * int(n_x) + b];
-            u_cell[t] = v;
-          }
-        for_near(cell, [&](const unsigned int j, const unsigned int D) {
-          if (!l.band[j])
-            for (unsigned int t = 0; t < nf; ++t)
-              u_cell[t] += fine_from_coarse[t * nD + D] * q_eff[l.first[j]];
-        });
-      }
-    add_band_near_field(q_eff, u);
+      if (!l.band[cell])
+        {
+          double v = U[cell];
+          if (near_band[cell])
+            for_near(cell, [&](const unsigned int j, const unsigned int D) {
+              if (l.band[j])
+                {
+                  const double *a = &coarse_from_band[D * nf];
+                  const double *q = &q_eff[l.first[j]];
+                  for (unsigned int f = 0; f < nf; ++f)
+                    v += a[f] * q[f];
+                }
+            });
+          u[l.first[cell]] = v;
+        }
+    set_band_points(q_eff, U, u);
   }
 
 
-  // The band's sources at band points: for a batch of band cells the
-  // sources about each gathered as one column (zeros where a neighbour is
-  // coarse), and all offsets' coefficients applied to the batch as one
-  // matrix product (BLAS), faster than the same sums cell by cell
-  // (doc/boundary_element.md).
+  // For a batch of band cells the values about each gathered as one
+  // column (the band's sources, the coarse cells' (zeros where the other
+  // kind is), the coarse response about the cell) and at_band_point
+  // applied to the batch as one matrix product (BLAS), faster than the
+  // same sums cell by cell (doc/boundary_element.md).
   void
-  NestedCompliance::add_band_near_field(const std::vector<double> &q_eff,
-                                        Vector<double>            &u) const
+  NestedCompliance::set_band_points(const std::vector<double> &q_eff,
+                                    const Vector<double>      &U,
+                                    Vector<double>            &u) const
   {
-    const NestedLayout    &l  = layout;
-    const unsigned int     nf = l.r * l.r, nD = (2 * near + 1) * (2 * near + 1);
-    constexpr unsigned int batch = 128;
+    const NestedLayout &l   = layout;
+    const int           n_x = l.n[1], p = order;
+    const unsigned int  nf = l.r * l.r, nD = (2 * near + 1) * (2 * near + 1),
+                       nP           = (2 * order + 1) * (2 * order + 1),
+                       K            = nD * (nf + 1) + nP;
+    constexpr unsigned int    batch = 128;
     std::vector<unsigned int> cells;
-    std::vector<double>       sources(nD * nf * batch), response(nf * batch);
+    std::vector<double>       columns(K * batch), response(nf * batch);
     const auto                flush = [&] {
-      const types::blas_int m = nf, n = cells.size(), k = nD * nf;
+      const types::blas_int m = nf, n = cells.size(), k = K;
       const double          one = 1., zero = 0.;
       gemm("N",
            "N",
@@ -309,31 +291,35 @@ namespace viscoslide
            &n,
            &k,
            &one,
-           fine_from_band.data(),
+           at_band_point.data(),
            &m,
-           sources.data(),
+           columns.data(),
            &k,
            &zero,
            response.data(),
            &m);
       for (unsigned int i = 0; i < cells.size(); ++i)
-        for (unsigned int t = 0; t < nf; ++t)
-          u[l.first[cells[i]] + t] += response[i * nf + t];
+        std::copy_n(&response[i * nf], nf, &u[l.first[cells[i]]]);
       cells.clear();
     };
     for (unsigned int cell = 0; cell < l.n_cells(); ++cell)
       if (l.band[cell])
         {
           // Every offset of a band cell lies in the window (margin), so
-          // each block of the column is written once: the source cell's
-          // values, or zeros for a coarse one.
-          double *column = &sources[cells.size() * nD * nf];
+          // each entry of the column is written once.
+          double *const column  = &columns[cells.size() * K];
+          double *const coarser = column + nD * nf;
           for_near(cell, [&](const unsigned int j, const unsigned int D) {
             if (l.band[j])
               std::copy_n(&q_eff[l.first[j]], nf, column + D * nf);
             else
               std::fill_n(column + D * nf, nf, 0.);
+            coarser[D] = l.band[j] ? 0. : q_eff[l.first[j]];
           });
+          double *P = coarser + nD;
+          for (int a = -p; a <= p; ++a)
+            for (int b = -p; b <= p; ++b)
+              *P++ = U[cell + a * n_x + b];
           cells.push_back(cell);
           if (cells.size() == batch)
             flush();
@@ -366,14 +352,23 @@ namespace viscoslide
                      0.5 * (K(X - 1, Y) - K(X + 1, Y)),
                      0.5 * (K(X, Y - 1) - K(X, Y + 1))};
     };
-    interpolation.assign(nf * nP, 0.);
-    fine_from_band.assign(nf * nD * nf, 0.);
-    fine_from_coarse.assign(nf * nD, 0.);
+    // at_band_point's three blocks (nested_compliance.h).
+    at_band_point.assign(nf * (nD * (nf + 1) + nP), 0.);
+    const auto fine_from_band =
+      [&](const int t, const int D, const int f) -> double & {
+      return at_band_point[(D * nf + f) * nf + t];
+    };
+    const auto fine_from_coarse = [&](const int t, const int D) -> double & {
+      return at_band_point[(nD * nf + D) * nf + t];
+    };
+    const auto interpolation = [&](const int t, const int P) -> double & {
+      return at_band_point[(nD * (nf + 1) + P) * nf + t];
+    };
     coarse_from_band.assign(nD * nf, 0.);
     for (int t = 0; t < nf; ++t)
       for (int a = -p; a <= p; ++a)
         for (int b = -p; b <= p; ++b)
-          interpolation[t * nP + (a + p) * (2 * p + 1) + b + p] =
+          interpolation(t, (a + p) * (2 * p + 1) + b + p) =
             lagrange[t / r][a + p] * lagrange[t % r][b + p];
     for (int Dy = -m; Dy <= m; ++Dy)
       for (int Dx = -m; Dx <= m; ++Dx)
@@ -399,19 +394,19 @@ namespace viscoslide
                 for (int b = -p; b <= p; ++b)
                   {
                     const double w =
-                      interpolation[t * nP + (a + p) * (2 * p + 1) + b + p];
+                      interpolation(t, (a + p) * (2 * p + 1) + b + p);
                     const Carried k = carried(b - Dx, a - Dy);
                     interpolated.mean += w * k.mean;
                     interpolated.x += w * k.x;
                     interpolated.y += w * k.y;
                   }
-              fine_from_coarse[t * nD + D] =
+              fine_from_coarse(t, D) =
                 coarse_at_fine(Dx * r - kt, Dy * r - st) - interpolated.mean;
               for (int f = 0; f < nf; ++f)
                 {
                   const int    sf = f / r - c, kf = f % r - c;
                   const double xi = double(kf) / r, eta = double(sf) / r;
-                  fine_from_band[(D * nf + f) * nf + t] =
+                  fine_from_band(t, D, f) =
                     fine_at_fine(Dx * r + kf - kt, Dy * r + sf - st) -
                     (interpolated.mean + xi * interpolated.x +
                      eta * interpolated.y) /

@@ -93,11 +93,12 @@ namespace viscoslide
     convolve(const std::vector<double>              &q_eff,
              const std::vector<std::vector<double>> &edge,
              Vector<double>                         &u) const;
-    // Adds to u at the band's points the near field of the band's
-    // sources.
+    // u at the band's points: the coarse response U interpolated, and the
+    // near field of the sources about each band cell.
     void
-    add_band_near_field(const std::vector<double> &q_eff,
-                        Vector<double>            &u) const;
+    set_band_points(const std::vector<double> &q_eff,
+                    const Vector<double>      &U,
+                    Vector<double>            &u) const;
 
     // A band cell's moments of q_eff: its mean and dipoles (units of H),
     // which the coarse grid carries.
@@ -129,12 +130,14 @@ namespace viscoslide
     // 1)^2 of them (index (D_y + near)(2 near + 1) + D_x + near), t a fine
     // point of the point's cell, f one of the source's (n_f = r^2 each):
     //   u_t = sum_P interpolation[t][P] U_P
-    //         + sum_D (band: sum_f fine_from_band[(D n_f + f) n_f + t] v_f;
-    //                  coarse: fine_from_coarse[t n_D + D] v),
+    //         + sum_D (band: sum_f fine_from_band[t][D n_f + f] v_f;
+    //                  coarse: fine_from_coarse[t][D] v),
     //   u_coarse = U + sum_D (band: sum_f coarse_from_band[D n_f + f] v_f),
-    // each the exact influence less what the coarse grid carried.
-    std::vector<double> interpolation, fine_from_band, fine_from_coarse,
-      coarse_from_band;
+    // each the exact influence less what the coarse grid carried. The
+    // three of u_t are one matrix, at_band_point (n_f rows, stored by
+    // columns): the columns D n_f + f of the band's sources, then n_D n_f
+    // + D of the coarse ones, then n_D (n_f + 1) + P of U.
+    std::vector<double> at_band_point, coarse_from_band;
     // Per coarse row and fine row s in it, index row r + s; empty where
     // the coarse row holds no band cell.
     std::vector<Strip> strips;

@@ -453,6 +453,12 @@ namespace viscoslide
                                                              const AddRow &); \
   template void   BoundaryElementSolver<dim>::retract(const AddRow &);          \
   template void   BoundaryElementSolver<dim>::start_from_jkr_contact();         \
+  template bool   BoundaryElementSolver<dim>::starts_from_jkr_sphere() const;   \
+  template double BoundaryElementSolver<dim>::discrete_jkr_contact(             \
+    double, double, Vector<double> &, Vector<double> &);                        \
+  template double BoundaryElementSolver<dim>::jkr_sphere(double,                \
+                                                         Vector<double> &,      \
+                                                         Vector<double> &);     \
   template double BoundaryElementSolver<dim>::approach_law_range() const;       \
   template void   BoundaryElementSolver<dim>::settle_law_range(const AddRow &); \
   template void   BoundaryElementSolver<dim>::shrink_law_range(                 \

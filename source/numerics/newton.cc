@@ -119,9 +119,11 @@ namespace viscoslide
         if (it == max_iterations)
           break;
 
-        eta = forcing_term(residual, residual_before, eta, tolerance);
         if (p.set_forcing)
-          p.set_forcing(eta);
+          {
+            eta = forcing_term(residual, residual_before, eta, tolerance);
+            p.set_forcing(eta);
+          }
         residual_before = residual;
         p.compute_update();
         if (!std::isfinite(p.update_norm()))

@@ -2,6 +2,7 @@
 #include <viscoslide/steady_sliding.h>
 
 #include <cstdio>
+#include <type_traits>
 
 namespace viscoslide
 {
@@ -37,21 +38,31 @@ namespace viscoslide
                       si);
     }
 
-    // The last converged state, so that a failure reports it and not the
-    // unconverged one.
-    struct LastConverged
+    // A converged continuation step, as continuation.csv shows it; the last
+    // one of a station is its row in steady_state.csv (that of a station
+    // missed: the state it was left in). Plain numbers, so that the process
+    // that took the station can send it.
+    struct Step
     {
       double            V_hat = 0., delta = 0., rate = 0.;
       SurfaceQuantities q{};
+      unsigned int      newton_iterations = 0;
+      unsigned long     n_dofs            = 0;
 
-      // Takes the solver's state and adds its row to continuation.csv.
-      void
-      record(const SteadySliding &solver, const Scales &scales, CsvTable &table)
+      static Step
+      of(const SteadySliding &solver)
       {
-        V_hat           = solver.speed();
-        delta           = solver.approach();
-        rate            = solver.dissipation_rate();
-        q               = solver.quantities();
+        return {solver.speed(),
+                solver.approach(),
+                solver.dissipation_rate(),
+                solver.quantities(),
+                solver.newton_iterations(),
+                solver.n_unknowns()};
+      }
+
+      void
+      add_to(CsvTable &table, const Scales &scales) const
+      {
         const double V  = V_hat * scales.eps / scales.tau_ref;
         const double Fn = q.normal_force;
         using F         = CsvTable;
@@ -64,9 +75,19 @@ namespace viscoslide
            {"mu_energy", F::format(std::abs(rate / V / Fn))},
            {contact_column(scales.dimension),
             F::format(q.contact_length / scales.contact)},
-           {"newton_iterations", std::to_string(solver.newton_iterations())},
-           {"n_dofs", std::to_string(solver.n_unknowns())}});
+           {"newton_iterations", std::to_string(newton_iterations)},
+           {"n_dofs", std::to_string(n_dofs)}});
       }
+    };
+
+    // A station as its process ran it: its converged steps, the state it
+    // ended in, and the error that stopped it, if one did.
+    struct Station
+    {
+      std::vector<Step> steps;
+      Step              last;
+      bool              converged = false;
+      std::vector<char> error;
     };
 
     // The profiles and fields of station k of n: with a list, a profile per
@@ -88,7 +109,188 @@ namespace viscoslide
       if (prm.output.write_fields)
         solver.write_fields(writer, k);
     }
+
+    // Station k from the solver's present state. Its steps go to `table`
+    // as they converge, or, for a process whose stations another writes
+    // (table = nullptr), into the station; if `catch_error`, the exception
+    // that stopped it goes there too (the other process waits for its
+    // outcome).
+    Station
+    run_station(SteadySliding                   &solver,
+                const Parameters::AllParameters &prm,
+                const Scales                    &scales,
+                OutputWriter                    &writer,
+                const unsigned int               k,
+                Step                            &last,
+                CsvTable                        *table,
+                const bool                       catch_error)
+    {
+      const auto  &speeds  = prm.sliding.speeds;
+      const auto   n_total = speeds.size() + prm.sliding.load_path.size();
+      const double unit    = solver.force_control() ? scales.force : scales.eps;
+      Station      station;
+      const auto   on_converged = [&] {
+        last = Step::of(solver);
+        if (table != nullptr)
+          last.add_to(*table, scales);
+        else
+          station.steps.push_back(last);
+      };
+      const auto run = [&] {
+        station.converged =
+          k < speeds.size()
+            ? solver.continue_to(speeds[k], on_converged)
+            : solver.continue_to_load(prm.sliding.load_path[k - speeds.size()] *
+                                        unit,
+                                      on_converged);
+        if (station.converged)
+          write_station(solver, prm, writer, k, n_total);
+      };
+      if (!catch_error)
+        run();
+      else
+        try
+          {
+            run();
+          }
+        catch (const std::exception &e)
+          {
+            const std::string what = e.what();
+            station.error.assign(what.begin(), what.end());
+          }
+      station.last = last;
+      return station;
+    }
+
+
+    // Plain values sent from process 1 to process 0, and received there.
+    template <typename T>
+    void
+    send(MPI_Comm comm, const std::vector<T> &values)
+    {
+      static_assert(std::is_trivially_copyable_v<T>);
+      MPI_Send(values.data(), values.size() * sizeof(T), MPI_BYTE, 0, 0, comm);
+    }
+
+    template <typename T>
+    std::vector<T>
+    receive(MPI_Comm comm)
+    {
+      MPI_Status status;
+      MPI_Probe(1, 0, comm, &status);
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      std::vector<T> values(bytes / sizeof(T));
+      MPI_Recv(values.data(), bytes, MPI_BYTE, 1, 0, comm, MPI_STATUS_IGNORE);
+      return values;
+    }
+
+    void
+    send(MPI_Comm comm, const Station &s)
+    {
+      send(comm, s.steps);
+      send(comm, std::vector<Step>{s.last});
+      send(comm, std::vector<char>{s.converged});
+      send(comm, s.error);
+    }
+
+    Station
+    receive_station(MPI_Comm comm)
+    {
+      // A braced list is evaluated in its order, that of the sends.
+      return {receive<Step>(comm),
+              receive<Step>(comm)[0],
+              receive<char>(comm)[0] != 0,
+              receive<char>(comm)};
+    }
+
+
+    // The stations [first, n) of a run, taken by one process in their
+    // order, or by two from both ends: process 0 from the first up,
+    // process 1 from the last down, meeting without overlap, each claiming
+    // its next by an atomic count of the stations claimed, held by process
+    // 0 (a shared-memory window on one node, so that a claim does not wait
+    // for the other's computation).
+    class StationClaims
+    {
+    public:
+      StationClaims(MPI_Comm           comm,
+                    const unsigned int first,
+                    const unsigned int n,
+                    const bool         two_ends)
+        : end(two_ends ? std::min(Utilities::MPI::this_mpi_process(comm), 2u)
+                       : 0)
+        , comm(comm)
+        , first(first)
+        , n(n)
+      {
+        if (!two_ends)
+          return;
+        const MPI_Aint bytes = end == 0 ? sizeof(long) : 0;
+        MPI_Win_allocate(
+          bytes, sizeof(long), MPI_INFO_NULL, comm, &count, &window);
+        if (end == 0)
+          *count = 0;
+        MPI_Barrier(comm);
+        MPI_Win_lock_all(0, window);
+      }
+
+      ~StationClaims()
+      {
+        if (window == MPI_WIN_NULL)
+          return;
+        MPI_Win_unlock_all(window);
+        MPI_Win_free(&window);
+      }
+
+      // This process's next station, n where none is left for it.
+      unsigned int
+      next()
+      {
+        if (window == MPI_WIN_NULL)
+          return first + mine++;
+        if (end == 2)
+          return n;
+        const long one = 1;
+        MPI_Fetch_and_op(&one, &claimed, MPI_LONG, 0, 0, MPI_SUM, window);
+        MPI_Win_flush(0, window);
+        if (claimed >= long(n - first))
+          return n;
+        return end == 0 ? first + mine++ : n - 1 - mine++;
+      }
+
+      // The stations claimed so far by both (this one's last claim).
+      double
+      fraction_claimed() const
+      {
+        return std::min(
+          1.,
+          (window == MPI_WIN_NULL ? first + mine : first + claimed + 1.) / n);
+      }
+
+      // Process 0 for the first end, 1 for the last, 2 for none.
+      const unsigned int end;
+
+    private:
+      MPI_Comm           comm;
+      const unsigned int first, n;
+      MPI_Win            window  = MPI_WIN_NULL;
+      long              *count   = nullptr;
+      long               claimed = 0;
+      unsigned int       mine    = 0;
+    };
   } // namespace
+
+
+  bool
+  stations_from_both_ends(const SteadySliding             &solver,
+                          const Parameters::AllParameters &prm,
+                          MPI_Comm                         comm)
+  {
+    return solver.from_both_ends() &&
+           Utilities::MPI::n_mpi_processes(comm) > 1 &&
+           prm.sliding.load_path.empty() && prm.sliding.speeds.size() > 1;
+  }
 
 
   void
@@ -106,47 +308,94 @@ namespace viscoslide
   {
     CsvTable    table   = open_continuation_table(prm, writer, start, comm);
     const auto &speeds  = prm.sliding.speeds;
-    const auto &loads   = prm.sliding.load_path;
-    const auto  n_total = speeds.size() + loads.size();
+    const auto  n_total = speeds.size() + prm.sliding.load_path.size();
     if (start.next_station > 0)
       {
         steady_state_table.resume(start.table_rows);
         if (progress != nullptr)
           progress->resume_case(double(start.next_station) / n_total);
       }
-    LastConverged last;
-    last.delta              = solver.approach();
-    last.q                  = solver.quantities();
-    const auto on_converged = [&] { last.record(solver, scales, table); };
+    Step last;
+    last.delta = solver.approach();
+    last.q     = solver.quantities();
 
-    const bool        force     = solver.force_control();
-    const double      unit      = force ? scales.force : scales.eps;
-    const std::string load_name = force ? "F_hat " : "delta_hat ";
-    std::string       failed;
-    for (unsigned int k = start.next_station; k < n_total; ++k)
+    const bool        two_ends = stations_from_both_ends(solver, prm, comm);
+    StationClaims     claims(comm, start.next_station, n_total, two_ends);
+    const std::string load_name =
+      solver.force_control() ? "F_hat " : "delta_hat ";
+    std::string failed, error;
+    // A station's rows and report: on every process (rank 0 writes them),
+    // or, from both ends, on process 0.
+    const auto record = [&](const unsigned int k, const Station &s) {
+      for (const Step &step : s.steps)
+        step.add_to(table, scales);
+      const Step &row = s.last;
+      steady_state_table.add_row(
+        row.V_hat, row.delta, row.q, row.rate, s.converged, 0., kind, out);
+      const bool   is_speed = k < speeds.size();
+      const double value =
+        is_speed ? speeds[k] : prm.sliding.load_path[k - speeds.size()];
+      if (!s.error.empty())
+        error = std::string(s.error.begin(), s.error.end());
+      else if (!s.converged)
+        failed += (failed.empty() ? "" : ", ") +
+                  (is_speed ? std::string("V_hat ") : load_name) +
+                  CsvTable::format(value);
+      else if (checkpoint)
+        checkpoint({k + 1, table.n_rows(), steady_state_table.n_rows()});
+      if (progress != nullptr && s.converged)
+        out << "  " << (is_speed ? "V_hat " : load_name) << value << " ("
+            << k + 1 << "/" << n_total << ")  ["
+            << progress->report(claims.fraction_claimed()) << "]" << std::endl;
+    };
+    // The last end's stations, sent to the first end when both are done.
+    std::vector<Station> from_last;
+    // A process stops claiming at an error (the other takes the rest).
+    while (error.empty())
       {
-        const bool   is_speed = k < speeds.size();
-        const double value    = is_speed ? speeds[k] : loads[k - speeds.size()];
-        const bool   converged =
-          is_speed ? solver.continue_to(value, on_converged)
-                     : solver.continue_to_load(value * unit, on_converged);
-        steady_state_table.add_row(
-          last.V_hat, last.delta, last.q, last.rate, converged, 0., kind, out);
-        if (!converged)
+        const unsigned int k = claims.next();
+        if (k >= n_total)
+          break;
+        const Station s = run_station(solver,
+                                      prm,
+                                      scales,
+                                      writer,
+                                      k,
+                                      last,
+                                      claims.end == 0 ? &table : nullptr,
+                                      two_ends);
+        if (claims.end == 0)
+          record(k, s);
+        else
           {
-            failed += (failed.empty() ? "" : ", ") +
-                      (is_speed ? std::string("V_hat ") : load_name) +
-                      CsvTable::format(value);
-            continue;
+            from_last.push_back(s);
+            if (!s.error.empty())
+              break;
           }
-        write_station(solver, prm, writer, k, n_total);
-        if (checkpoint)
-          checkpoint({k + 1, table.n_rows(), steady_state_table.n_rows()});
-        if (progress != nullptr)
-          out << "  " << (is_speed ? "V_hat " : load_name) << value << " ("
-              << k + 1 << "/" << n_total << ")  ["
-              << progress->report((k + 1.) / n_total) << "]" << std::endl;
       }
+    if (two_ends)
+      {
+        if (claims.end == 1)
+          {
+            send(comm, std::vector<unsigned int>{unsigned(from_last.size())});
+            for (const Station &s : from_last)
+              send(comm, s);
+          }
+        else if (claims.end == 0)
+          {
+            // Taken downwards from the last station: recorded upwards.
+            const unsigned int   m = receive<unsigned int>(comm)[0];
+            std::vector<Station> stations;
+            for (unsigned int i = 0; i < m; ++i)
+              stations.push_back(receive_station(comm));
+            for (unsigned int i = m; i-- > 0;)
+              record(n_total - 1 - i, stations[i]);
+          }
+        error  = Utilities::MPI::broadcast(comm, error, 0);
+        failed = Utilities::MPI::broadcast(comm, failed, 0);
+      }
+    if (!error.empty())
+      throw std::runtime_error(error);
     if (!failed.empty())
       throw std::runtime_error(
         "The " + Parameters::to_string(kind) + " solver did not converge at " +

@@ -57,6 +57,15 @@ namespace viscoslide
     n_unknowns() const = 0;
     virtual bool
     force_control() const = 0;
+    // Whether two processes may take a list of speeds from both ends, one
+    // up from the first, the other down from the last: for a solver each
+    // of whose processes holds the whole problem, and that reaches any
+    // speed directly from rest.
+    virtual bool
+    from_both_ends() const
+    {
+      return false;
+    }
 
     virtual void
     write_profile(const std::string &path) const = 0;
@@ -84,7 +93,19 @@ namespace viscoslide
   // Runs the stations of Sliding speed (then Load path) from
   // start.next_station on, with a row per station in `table` and one per
   // converged step in continuation.csv; `checkpoint`, if given, is called
-  // after each converged station.
+  // after each converged station. Where stations_from_both_ends(), process
+  // 0 takes the speeds from the first up, process 1 from the last down
+  // (each writing its stations' profiles), until they meet; process 0
+  // writes the rows, process 1's when both are done; any further
+  // processes wait.
+  // Whether run_stations takes the speeds from both ends: two or more
+  // processes, a solver that can, a list of speeds and no Load path
+  // (which continues from the last speed).
+  bool
+  stations_from_both_ends(const SteadySliding             &solver,
+                          const Parameters::AllParameters &prm,
+                          MPI_Comm                         comm);
+
   void
   run_stations(
     SteadySliding                                        &solver,

@@ -293,9 +293,11 @@ def nested_curve(argv):
     mu); the largest grid, GMRES iterations per Newton step, peak memory and
     the wall time, approach included, on one process. Further entries as
     "Section/Entry=value; ..." (e.g. "Loading/Target load=-0.25"; the reference
-    is then not the run's, and only the energy balance counts).
+    is then not the run's, and only the energy balance counts). With a
+    number of processes, they take the speeds in turns (each holds the
+    whole grid).
 
-        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list" | file] ["entry=value; ..."]"""
+        scripts/bench_nested [nested|uniform] [refinement] ["V_hat list" | file] ["entry=value; ..."] [processes]"""
     prepare()
     grid = argv[0] if argv else 'nested'
     refinement = argv[1] if len(argv) > 1 else '5'
@@ -307,12 +309,15 @@ def nested_curve(argv):
     if speeds != 'file':
         changes['Sliding/Sliding speed'] = speeds
     for item in (argv[3].split(';') if len(argv) > 3 else []):
+        if not item.strip():
+            continue
         key, value = item.split('=', 1)
         changes[key.strip()] = value.strip()
     path = prm.override_file('parameter_files/sphere_friction.prm',
                              os.path.join(work, 'run.prm'), changes)
     log = f'{work}/out.log'
-    code, wall = timed_run([VISCOSLIDE, path], log)
+    processes = int(argv[4]) if len(argv) > 4 else 1
+    code, wall = timed_run(mpirun(processes, path) if processes > 1 else [VISCOSLIDE, path], log)
     text = open(log).read()
     if code:
         print('\n'.join(text.splitlines()[-20:]))
@@ -330,7 +335,7 @@ def nested_curve(argv):
         if same and os.path.exists(path) else {}
     print(f'{grid} grid, refinement {refinement}: largest grid {max(map(int, grids))} points, '
           f'GMRES {gmres[-1] if gmres else "-"} per Newton step, peak memory {peak:.2f} GB, '
-          f'wall {wall:.1f} s (approach included)')
+          f'wall {wall:.1f} s (approach included) on {processes} process(es)')
     print('V_hat      mu        error   A_hat    error   energy balance')
     for r in rows(f'{work}/out/steady_state.csv'):
         V, mu, A = float(r['V_hat']), float(r['mu']), float(r['A_hat'])

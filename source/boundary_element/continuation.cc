@@ -71,7 +71,7 @@ namespace viscoslide
                                : (next - at) / (at - before.at);
         if (moving && before.valid)
           grid->predict(edges_at, before.edges, ratio, state);
-        if (moving || !predict_on_coarse(at, next, at_state, set))
+        const auto secant = [&] {
           predict(at_state,
                   generation_at,
                   before.state,
@@ -79,7 +79,27 @@ namespace viscoslide
                       before.state.gap.size() == state.gap.size()
                     ? ratio
                     : 0.);
-        if (solve(!moving) >= 0)
+        };
+        // A coarse grid's step, relaxed only if Newton's method fails on
+        // it and then on the fine grid from the secant: the coarse
+        // relaxation is the cheaper where a step crosses the friction
+        // peak, the secant where the coarse Newton merely stalls.
+        const bool nested = !moving && grid->coarse_placement() != nullptr;
+        const bool coarse =
+          nested && predict_on_coarse(at, next, at_state, set, false);
+        if (!coarse)
+          secant();
+        int its = solve(!moving && (coarse || !nested));
+        if (its < 0 && nested && !coarse)
+          {
+            if (placement_at)
+              grid->regrid(*placement_at, state);
+            state = at_state;
+            if (!predict_on_coarse(at, next, at_state, set, true))
+              secant();
+            its = solve();
+          }
+        if (its >= 0)
           {
             before = {true, false, at, at_state, generation_at, edges_at};
             at     = next;
@@ -107,7 +127,8 @@ namespace viscoslide
     const double                       at,
     const double                       next,
     const SurfaceState                &at_state,
-    const std::function<void(double)> &set)
+    const std::function<void(double)> &set,
+    const bool                         relax)
   {
     const auto coarse = grid->coarse_placement();
     if (!coarse)
@@ -132,7 +153,7 @@ namespace viscoslide
         coarse_step = {true, at, state};
       }
     set(next);
-    if (solve_on_grid(false) < 0)
+    if (solve_on_grid(relax) < 0)
       {
         coarse_step.valid = false;
         return back(false);
@@ -212,6 +233,14 @@ namespace viscoslide
       }
     set_speed(0);
     return false;
+  }
+
+
+  template <int dim>
+  bool
+  BoundaryElementSolver<dim>::from_both_ends() const
+  {
+    return !grid->follows_contact();
   }
 
 
@@ -352,8 +381,10 @@ namespace viscoslide
     double,                                                               \
     double,                                                               \
     const SurfaceState &,                                                 \
-    const std::function<void(double)> &);                                 \
+    const std::function<void(double)> &,                                  \
+    bool);                                                                \
   template void BoundaryElementSolver<dim>::set_speed(double);            \
+  template bool BoundaryElementSolver<dim>::from_both_ends() const;       \
   template bool BoundaryElementSolver<dim>::start_sliding(double);        \
   template bool BoundaryElementSolver<dim>::continue_to(                  \
     double, const std::function<void()> &);                               \

@@ -31,8 +31,12 @@ namespace viscoslide
     const std::string what =
       "steady state (boundary elements), V_hat = " + CsvTable::format(V_hat) +
       ", delta_hat = " + CsvTable::format(approach() / scales.eps);
-    write_profile_csv(path, points, scales, what, comm);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    // Where two processes take the stations from both ends, each writes
+    // its own.
+    const MPI_Comm writers =
+      stations_from_both_ends(*this, prm, comm) ? MPI_COMM_SELF : comm;
+    write_profile_csv(path, points, scales, what, writers);
+    if (Utilities::MPI::this_mpi_process(writers) == 0)
       grid->write_map(path.substr(0, path.rfind('.')) + ".vti",
                       what,
                       gaps,

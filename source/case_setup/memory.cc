@@ -121,6 +121,25 @@ namespace viscoslide
       }
 
 
+      // The processes of this run on this node (Open MPI's mpirun says; one
+      // where it does not): each holds the whole boundary-element problem.
+      double
+      processes_on_this_node()
+      {
+        const char *value = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+        return value == nullptr ? 1. : std::max(1, std::atoi(value));
+      }
+
+      // " in its N processes, ..." where there are several.
+      std::string
+      held_by_each(const double processes)
+      {
+        return processes > 1 ? " in its " + std::to_string(int(processes)) +
+                                 " processes, each holding the whole grid"
+                             : "";
+      }
+
+
       FiniteElements3dSize
       finite_elements_3d_size(const AllParameters &p)
       {
@@ -225,8 +244,10 @@ namespace viscoslide
         const double points =
           (length / spacing) * (p.geometry.length() / spacing) +
           nested_band_points(p, spacing);
-        const double gigabytes = plane_grid_bytes_per_point * points / 1e9;
-        const double max_grid_gigabytes = plane_grid_memory_limit_gb();
+        const double processes = processes_on_this_node();
+        const double gigabytes =
+          processes * plane_grid_bytes_per_point * points / 1e9;
+        const double       max_grid_gigabytes = plane_grid_memory_limit_gb();
         std::ostringstream message;
         message << "the 3D boundary-element grid of " << points << " points ("
                 << length << " x " << p.geometry.length() << " eps at "
@@ -234,7 +255,8 @@ namespace viscoslide
                 << (p.boundary_element.grid == GridKind::nested
                       ? ", with its band about the contact's edge"
                       : "")
-                << ") needs about " << gigabytes << " GB, this machine has "
+                << ") needs about " << gigabytes << " GB"
+                << held_by_each(processes) << ", this machine has "
                 << this_machine_memory_gb()
                 << " GB: raise 'Boundary element/Grid spacing' or lower "
                 << (p.geometry.substrate == Substrate::half_plane
@@ -285,13 +307,14 @@ namespace viscoslide
                                                std::max(a, 50.))
                                .size() -
                              1;
-        const double       gigabytes = 4. * 8. * cells * cells / 1e9;
-        const double       available = this_machine_memory_gb();
+        const double processes = processes_on_this_node();
+        const double gigabytes = processes * 4. * 8. * cells * cells / 1e9;
+        const double available = this_machine_memory_gb();
         std::ostringstream message;
         message << what << " about the JKR contact (" << 2 * a
                 << " eps wide) has about " << cells << " cells, whose dense "
-                << "compliance needs about " << gigabytes
-                << " GB; this machine has " << available
+                << "compliance needs about " << gigabytes << " GB"
+                << held_by_each(processes) << "; this machine has " << available
                 << " GB: raise 'Boundary element/Grid spacing' or 'Boundary "
                    "element/Grading ratio'";
         require(gigabytes <= 0.8 * available, message.str());

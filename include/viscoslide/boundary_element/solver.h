@@ -109,6 +109,11 @@ namespace viscoslide
     {
       return control.force_controlled;
     }
+    // Every process holds the whole problem, and a grid that does not
+    // follow the contact jumps from rest to any speed (one that does
+    // starts slow). [continuation.cc]
+    bool
+    from_both_ends() const override;
     // [output.cc]
     void
     write_profile(const std::string &path) const override;
@@ -228,12 +233,14 @@ namespace viscoslide
     // (nested iteration, as Brandt's full multigrid starts each level from
     // the coarser one); the band is then made about the predicted contact
     // where it has left the refined cells. False where the coarse grid
-    // fails or there is none (the grid and state then as they were).
+    // fails or there is none (the grid and state then as they were); the
+    // coarse step relaxes where Newton's method fails if `relax`.
     bool
     predict_on_coarse(double                             at,
                       double                             next,
                       const SurfaceState                &at_state,
-                      const std::function<void(double)> &set);
+                      const std::function<void(double)> &set,
+                      bool                               relax);
     // Steps the control parameter from its present value to `to` through
     // set(value), in steps no larger than `step` (halved where Newton
     // fails, down to `min_step`), calling on_converged after each and

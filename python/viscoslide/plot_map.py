@@ -35,15 +35,31 @@ def read_vti(path):
 
 
 def read_vtp(path):
-    """(x, y, fields, header) of an ASCII VTK poly data file of points as
-    the nested grid writes it: x, y and each field one value per point."""
+    """(x, y, fields, header) of a VTK poly data file of points as the
+    nested grid writes it (its arrays appended raw, each its UInt64 length
+    in bytes then its values): x, y and each field one value per point."""
     import numpy as np
-    text = open(path).read()
+    data = open(path, 'rb').read()
+    start = data.index(b'<AppendedData encoding="raw">')
+    text = data[:start].decode()
+    raw = data[data.index(b'_', start) + 1:]
+    order = '<' if 'LittleEndian' in text else '>'
+
+    def array(tag):
+        offset = int(re.search(r'offset="(\d+)"', tag).group(1))
+        size = int(np.frombuffer(raw, dtype=order + 'u8', count=1, offset=offset)[0])
+        kind = np.dtype(order + {'Float32': 'f4', 'Float64': 'f8', 'Int32': 'i4',
+                                 'Int64': 'i8'}[re.search(r'type="(\w+)"', tag).group(1)])
+        values = np.frombuffer(raw, dtype=kind, count=size // kind.itemsize, offset=offset + 8)
+        return values.astype(float)
+
     fields = {}
-    for name, data in re.findall(r'Name="([^"]+)"[^>]*>\s*([^<]*)</DataArray>', text):
-        fields[name] = np.array(data.split(), dtype=float)
-    points = re.search(r'<Points>\s*<DataArray[^>]*>\s*([^<]*)</DataArray>', text).group(1)
-    xyz = np.array(points.split(), dtype=float).reshape(-1, 3)
+    for tag in re.findall(r'<DataArray[^>]*/>', text):
+        name = re.search(r'Name="([^"]+)"', tag)
+        if name:
+            fields[name.group(1)] = array(tag)
+    points = re.search(r'<Points>\s*(<DataArray[^>]*/>)', text).group(1)
+    xyz = array(points).reshape(-1, 3)
     header = re.search(r'<!--(.*?)-->', text)
     return xyz[:, 0], xyz[:, 1], fields, header.group(1).strip() if header else ''
 

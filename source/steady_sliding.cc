@@ -2,6 +2,7 @@
 #include <viscoslide/steady_sliding.h>
 
 #include <cstdio>
+#include <functional>
 #include <type_traits>
 
 namespace viscoslide
@@ -205,6 +206,34 @@ namespace viscoslide
     }
 
 
+    // The last end's stations, taken downwards from the last (n - 1, n -
+    // 2, ...), sent from process 1 and recorded upwards on process 0.
+    void
+    exchange_last_end(
+      MPI_Comm                                                  comm,
+      const unsigned int                                        end,
+      const std::vector<Station>                               &from_last,
+      const unsigned int                                        n,
+      const std::function<void(unsigned int, const Station &)> &record)
+    {
+      if (end == 1)
+        {
+          send(comm, std::vector<unsigned int>{unsigned(from_last.size())});
+          for (const Station &s : from_last)
+            send(comm, s);
+        }
+      else if (end == 0)
+        {
+          const unsigned int   m = receive<unsigned int>(comm)[0];
+          std::vector<Station> stations;
+          for (unsigned int i = 0; i < m; ++i)
+            stations.push_back(receive_station(comm));
+          for (unsigned int i = m; i-- > 0;)
+            record(n - 1 - i, stations[i]);
+        }
+    }
+
+
     // The stations [first, n) of a run, taken by one process in their
     // order, or by two from both ends: process 0 from the first up,
     // process 1 from the last down, meeting without overlap, each claiming
@@ -375,22 +404,7 @@ namespace viscoslide
       }
     if (two_ends)
       {
-        if (claims.end == 1)
-          {
-            send(comm, std::vector<unsigned int>{unsigned(from_last.size())});
-            for (const Station &s : from_last)
-              send(comm, s);
-          }
-        else if (claims.end == 0)
-          {
-            // Taken downwards from the last station: recorded upwards.
-            const unsigned int   m = receive<unsigned int>(comm)[0];
-            std::vector<Station> stations;
-            for (unsigned int i = 0; i < m; ++i)
-              stations.push_back(receive_station(comm));
-            for (unsigned int i = m; i-- > 0;)
-              record(n_total - 1 - i, stations[i]);
-          }
+        exchange_last_end(comm, claims.end, from_last, n_total, record);
         error  = Utilities::MPI::broadcast(comm, error, 0);
         failed = Utilities::MPI::broadcast(comm, failed, 0);
       }

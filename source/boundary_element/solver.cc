@@ -140,7 +140,19 @@ namespace viscoslide
     residual[n] = control.force_controlled
                     ? control.mismatch(Fn, state.delta) / scales.sigma_max
                     : 0.;
-    if (with_matrix && round_off_due && grid->positive_compliance())
+    if (with_matrix)
+      assemble_matrix();
+  }
+
+
+  template <int dim>
+  void
+  BoundaryElementSolver<dim>::assemble_matrix()
+  {
+    const unsigned int n = state.gap.size();
+    const auto        &p = grid->at();
+    const auto        &u = displacement;
+    if (round_off_due && grid->positive_compliance())
       {
         // The residual's rounding error, once per solve (it costs a
         // product with C, an eighth of a Newton step on the 3D grids, and
@@ -165,13 +177,8 @@ namespace viscoslide
         round_off     = std::sqrt(sum / n) / scales.eps;
         round_off_due = false;
       }
-    if (with_matrix)
-      {
-        TimerOutput::Scope t(timer, "boundary element: preconditioner");
-        grid->preconditioner().update(tangent,
-                                      dashpot,
-                                      control.force_controlled);
-      }
+    TimerOutput::Scope t(timer, "boundary element: preconditioner");
+    grid->preconditioner().update(tangent, dashpot, control.force_controlled);
   }
 
 
@@ -315,9 +322,10 @@ namespace viscoslide
   BoundaryElementSolver<dim>::newton_problem()
   {
     NewtonProblem p;
-    p.assemble      = [this](const bool with_matrix) { assemble(with_matrix); };
-    p.residual_norm = [this] { return residual_norm(); };
-    p.tolerance     = [this] {
+    p.assemble = [this](const bool with_matrix) { assemble(with_matrix); };
+    p.assemble_matrix = [this] { assemble_matrix(); };
+    p.residual_norm   = [this] { return residual_norm(); };
+    p.tolerance       = [this] {
       return std::max(100. * prm.solver.newton_tolerance, round_off);
     };
     p.compute_update  = [this] { compute_update(); };

@@ -170,7 +170,11 @@ namespace viscoslide
                   << std::endl;
             return -1;
           }
-        p.assemble(true);
+        // The trial accepted is the iterate: its residual is assembled.
+        if (p.assemble_matrix)
+          p.assemble_matrix();
+        else
+          p.assemble(true);
         residual = p.residual_norm();
       }
     return -1;

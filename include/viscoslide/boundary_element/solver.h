@@ -141,10 +141,13 @@ namespace viscoslide
     void
     step_state(double alpha);
     // The gaps, tractions and their tangent, the residual u - C q with the
-    // load equation last; with the matrix, the residual's rounding error
-    // and the preconditioner.
+    // load equation last; with the matrix, assemble_matrix().
     void
     assemble(bool with_matrix);
+    // At the state assemble() last saw: the residual's rounding error (once
+    // per solve) and the preconditioner.
+    void
+    assemble_matrix();
     double
     residual_norm() const;
     void

@@ -93,8 +93,13 @@ namespace viscoslide
   {
     // System residual, and the Jacobian if asked.
     std::function<void(bool with_matrix)> assemble;
-    std::function<double()>               residual_norm;
-    std::function<double()>               tolerance;
+    // Optional: the Jacobian alone, at the iterate whose residual the last
+    // assemble(false) computed (the accepted trial of the line search),
+    // where the residual costs as much as the Jacobian's setup (the
+    // boundary elements' product with the compliance).
+    std::function<void()>   assemble_matrix;
+    std::function<double()> residual_norm;
+    std::function<double()> tolerance;
     // The Newton update from the assembled system.
     std::function<void()> compute_update;
     // The update's norm, to catch a linear solve that gave Inf/NaN.

@@ -75,6 +75,17 @@ namespace viscoslide
       return {alpha, residual, false};
     }
 
+    // The line search's accepted trial is the iterate, its residual
+    // assembled: the Jacobian alone where the problem can set it up so.
+    void
+    assemble_at_trial(const NewtonProblem &p)
+    {
+      if (p.assemble_matrix)
+        p.assemble_matrix();
+      else
+        p.assemble(true);
+    }
+
     // Resets the forcing term of a problem when newton() returns.
     struct ForcingReset
     {
@@ -161,7 +172,7 @@ namespace viscoslide
           {
             if (trial <= round_off && negligible)
               {
-                p.assemble(true);
+                assemble_at_trial(p);
                 return it + 1;
               }
             if (verbose)
@@ -170,11 +181,7 @@ namespace viscoslide
                   << std::endl;
             return -1;
           }
-        // The trial accepted is the iterate: its residual is assembled.
-        if (p.assemble_matrix)
-          p.assemble_matrix();
-        else
-          p.assemble(true);
+        assemble_at_trial(p);
         residual = p.residual_norm();
       }
     return -1;

@@ -249,7 +249,6 @@ namespace viscoslide
                     const bool         two_ends)
         : end(two_ends ? std::min(Utilities::MPI::this_mpi_process(comm), 2u)
                        : 0)
-        , comm(comm)
         , first(first)
         , n(n)
       {
@@ -263,6 +262,10 @@ namespace viscoslide
         MPI_Barrier(comm);
         MPI_Win_lock_all(0, window);
       }
+
+      StationClaims(const StationClaims &) = delete;
+      StationClaims &
+      operator=(const StationClaims &) = delete;
 
       ~StationClaims()
       {
@@ -301,7 +304,6 @@ namespace viscoslide
       const unsigned int end;
 
     private:
-      MPI_Comm           comm;
       const unsigned int first, n;
       MPI_Win            window  = MPI_WIN_NULL;
       long              *count   = nullptr;

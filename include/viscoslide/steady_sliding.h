@@ -90,14 +90,6 @@ namespace viscoslide
     std::size_t  table_rows        = 0;
   };
 
-  // Runs the stations of Sliding speed (then Load path) from
-  // start.next_station on, with a row per station in `table` and one per
-  // converged step in continuation.csv; `checkpoint`, if given, is called
-  // after each converged station. Where stations_from_both_ends(), process
-  // 0 takes the speeds from the first up, process 1 from the last down
-  // (each writing its stations' profiles), until they meet; process 0
-  // writes the rows, process 1's when both are done; any further
-  // processes wait.
   // Whether run_stations takes the speeds from both ends: two or more
   // processes, a solver that can, a list of speeds and no Load path
   // (which continues from the last speed).
@@ -106,6 +98,14 @@ namespace viscoslide
                           const Parameters::AllParameters &prm,
                           MPI_Comm                         comm);
 
+  // Runs the stations of Sliding speed (then Load path) from
+  // start.next_station on, with a row per station in `table` and one per
+  // converged step in continuation.csv; `checkpoint`, if given, is called
+  // after each converged station. Where stations_from_both_ends(), process
+  // 0 takes the speeds from the first up, process 1 from the last down
+  // (each writing its stations' profiles), until they meet; process 0
+  // writes the rows, process 1's when both are done; any further
+  // processes wait.
   void
   run_stations(
     SteadySliding                                        &solver,

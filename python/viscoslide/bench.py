@@ -293,9 +293,9 @@ def nested_curve(argv):
     mu); the largest grid, GMRES iterations per Newton step, peak memory and
     the wall time, approach included, on one process. Further entries as
     "Section/Entry=value; ..." (e.g. "Loading/Target load=-0.25"; the reference
-    is then not the run's, and only the energy balance counts). With a
-    number of processes, they take the speeds in turns (each holds the
-    whole grid).
+    is then not the run's, and only the energy balance counts). With two
+    processes, they take the speeds from both ends (each holds the whole
+    grid).
 
         scripts/bench_nested [nested|uniform] [refinement] ["V_hat list" | file] ["entry=value; ..."] [processes]"""
     prepare()

@@ -342,9 +342,9 @@ namespace viscoslide
           std::abs(p.y[j]) <= 1.25 * extent_y + 4 * dx)
         shown.push_back(j);
     // VTK poly data of the points, its arrays appended as raw binary in
-    // single precision (the 7 digits a picture needs; half the decimal
-    // text's size, and no time formatting it), each its length in bytes
-    // then its values.
+    // single precision (the 7 digits a picture needs; six tenths of the
+    // decimal text's size, and no time formatting it), each its length in
+    // bytes then its values.
     std::string        arrays;
     std::ostringstream tags;
     const auto append = [&](const std::string &tag, const auto &values) {

@@ -51,7 +51,7 @@ namespace viscoslide
             Utilities::MPI::this_mpi_process(comm) == 0 &&
               prm.output.verbosity != Parameters::Verbosity::quiet)
     // Every process holds the whole problem and may take other stations
-    // than the rest (station_turns): its timers are its own, not
+    // than the rest (from_both_ends): its timers are its own, not
     // synchronized (the statistics are gathered at the end).
     , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
     , scales(parts.scales)
